@@ -1,0 +1,503 @@
+// Stress integration of the mortar-joint law. The derivation of the rate
+// equations and every decision taken here are written up in docs/model.md.
+//
+// Structure of one increment:
+//   - the increment is cut into segments of constant unilateral regime
+//     (open h = 1 / closed h = 0, Eq. 13 with the sign of the elastic normal
+//     separation); a switch is resolved at the point where it happens;
+//   - in a segment: elastic trial with the secant stiffness (Eq. 1, 21); if it
+//     leaves the surface, the elastic-plastic intersection (Pegasus), then
+//     plastic substeps of the rate statement (Eq. 16-18 with the secant damage
+//     rule) by modified Euler with error control or by one forward Euler step;
+//   - where no strain-driven solution exists (a closure that jumps the shear
+//     stiffness back to ks, or a snap-back where softening outruns the elastic
+//     relaxation), a return at fixed separation along the flow direction.
+#include "mortar/integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mortar {
+
+const char* failure_name(Failure f) {
+  switch (f) {
+    case Failure::none: return "none";
+    case Failure::too_many_substeps: return "too many substeps";
+    case Failure::relaxation_failed: return "return at fixed separation did not reach the surface";
+    case Failure::too_many_switches: return "too many open/closed switches in one increment";
+    case Failure::non_finite_increment: return "separation increment is not finite";
+    case Failure::invalid_state: return "invalid state";
+    case Failure::non_finite_result: return "non-finite result";
+  }
+  return "unknown";
+}
+
+const char* check_state(const State& s) {
+  const double v[] = {s.plastic[0], s.plastic[1], s.plastic[2], s.crack[0], s.crack[1],
+                      s.crack[2], s.wI, s.wII, s.wIII, s.dn, s.ds, s.separation[0],
+                      s.separation[1], s.separation[2], s.dissipation_plastic,
+                      s.dissipation_damage, s.energy_unilateral};
+  for (double x : v)
+    if (!std::isfinite(x)) return "every state variable must be finite";
+  if (!(s.dn >= 0 && s.dn <= 1)) return "damage d_n (SDV 10) must lie in [0, 1]";
+  if (!(s.ds >= 0 && s.ds <= 1)) return "damage d_s (SDV 11) must lie in [0, 1]";
+  if (!(s.wI >= 0)) return "work w_I (SDV 7) must be >= 0";
+  if (!(s.wIII >= 0)) return "work w_III (SDV 9) must be >= 0";
+  return nullptr;
+}
+
+namespace {
+
+constexpr int kMaxSegments = 32;
+constexpr int kMaxRelaxSteps = 20000;
+constexpr int kMaxCrossingCuts = 8;
+constexpr double kTiny = 1e-300;
+
+// Increments of everything the rate statement integrates, over one stage.
+struct Rates {
+  Vec3 dsigma = Vec3::Zero(), dplastic = Vec3::Zero(), dcrack = Vec3::Zero();
+  double dwI = 0, dwII = 0, dwIII = 0, dDp = 0;
+  bool snapback = false;  // no strain-driven solution: consistency denominator <= 0
+};
+
+Vec3 kbar(const Model& M) { return Vec3(M.p.kn, M.p.ks, M.p.ks); }
+Vec3 crack_ratio(const Model& M) { return Vec3(M.p.bn, M.p.bs, M.p.bs); }
+
+// The working point: state + the traction that goes with it.
+struct Point {
+  State y;
+  Vec3 sigma;
+};
+
+void add(Point& P, const Rates& r, double w) {
+  P.sigma += w * r.dsigma;
+  P.y.plastic += w * r.dplastic;
+  P.y.crack += w * r.dcrack;
+  P.y.wI += w * r.dwI;
+  P.y.wII += w * r.dwII;
+  P.y.wIII += w * r.dwIII;
+  P.y.dissipation_plastic += w * r.dDp;
+}
+
+// Plastic increments for a plastic-multiplier increment dl along the flow.
+Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
+  Rates r;
+  r.dsigma = -dl * f.k_A_m;
+  r.dplastic = dl * f.m;
+  r.dcrack = crack_ratio(M).cwiseProduct(r.dplastic);
+  r.dwI = dl * f.gI;
+  r.dwII = dl * f.gII;
+  r.dwIII = dl * f.gIII;
+  r.dDp = sigma.dot(r.dplastic);
+  return r;
+}
+
+// One stage of the rate statement (Eq. 16-18; MODEL.md section 6):
+//   dsigma = kbar (dd - (I + h b) m dl), dl from the consistency condition.
+Rates stage(const Model& M, const Point& P, const Vec3& dd) {
+  const Surface S = surface_of(M, P.y);
+  const Flow f = flow_of(M, P.sigma, S, P.y.open);
+  const double num = f.dF.dot(kbar(M).cwiseProduct(dd));
+  Rates r;
+  if (num <= 0) {  // unloading inside the step: secant elasticity
+    r.dsigma = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
+    return r;
+  }
+  const double scale = f.dF.dot(f.k_A_m);
+  if (!(f.denominator > 1e-12 * std::max(scale, kTiny))) {
+    r.snapback = true;
+    return r;
+  }
+  r = along_flow(M, P.sigma, f, num / f.denominator);
+  r.dsigma += kbar(M).cwiseProduct(dd);
+  return r;
+}
+
+// Damage follows the secant through the plastic displacement while the joint
+// is open (MODEL.md section 6), never decreases, and the traction is then
+// re-derived from Eq. 1 so that traction and state always agree. An open
+// joint with no strength left (s = 0) can only carry zero traction: the
+// surface is the apex, so d = 1. The energy released by the damage growth is
+// booked as damage dissipation (1/2 kbar (delta_e)^2 dd, trapezoidal in
+// delta_e over the step, exact for the jump to d = 1).
+void settle(const Model& M, Point& P, const Vec3& e_start) {
+  State& y = P.y;
+  if (!y.open) {
+    P.sigma = traction_of(M, y);
+    return;
+  }
+  const Vec3 e = y.elastic_separation();
+  const double es = std::hypot(e[1], e[2]), es0 = std::hypot(e_start[1], e_start[2]);
+  double dn = y.dn, ds = y.ds;
+  if (e[0] > 0) dn = std::clamp(1.0 - P.sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
+  if (es > 0) ds = std::clamp(1.0 - shear_norm(P.sigma) / (M.p.ks * es), y.ds, 1.0);
+  y.dissipation_damage += 0.25 * M.p.kn * (dn - y.dn) * (e_start[0] * e_start[0] + e[0] * e[0]) +
+                          0.25 * M.p.ks * (ds - y.ds) * (es0 * es0 + es * es);
+  y.dn = dn;
+  y.ds = ds;
+  if (surface_of(M, y).s <= 0 && (y.dn < 1 || y.ds < 1)) {
+    y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e[0] * e[0] + 0.5 * M.p.ks * (1 - y.ds) * es * es;
+    y.dn = 1;
+    y.ds = 1;
+  }
+  P.sigma = traction_of(M, y);
+}
+
+// Rates of the return at fixed separation, per unit plastic multiplier.
+Rates relaxation_rates(const Model& M, const Point& P, double dl) {
+  const Surface S = surface_of(M, P.y);
+  return along_flow(M, P.sigma, flow_of(M, P.sigma, S, P.y.open), dl);
+}
+
+// Heun step of the return at fixed separation over dl.
+Point relaxation_step(const Model& M, const Point& P, double dl) {
+  Point A = P;
+  const Rates r1 = relaxation_rates(M, P, dl);
+  add(A, r1, 1.0);
+  const Rates r2 = relaxation_rates(M, A, dl);
+  Point B = P;
+  add(B, r1, 0.5);
+  add(B, r2, 0.5);
+  settle(M, B, P.y.elastic_separation());
+  return B;
+}
+
+double yield_of(const Model& M, const Point& P) { return yield_function(P.sigma, surface_of(M, P.y)); }
+
+// Return to the surface at fixed separation: march along the flow direction
+// (Heun in lambda) with steps that change the traction and the strength by at
+// most 5 %, capped by the Newton estimate F / denominator, and stop at the
+// first crossing of F = 0, located by Pegasus inside the last step, so the
+// return never overshoots the surface or passes the apex. With force_first it
+// takes a step even from F <= 0 (snap-back: the surface shrinks faster than
+// the traction relaxes, so F first grows).
+bool relax(const Model& M, Point& P, IntegrationStatus& st, bool force_first) {
+  ++st.relaxations;
+  st.plastic = true;
+  for (int step = 0; step < kMaxRelaxSteps; ++step) {
+    const Surface S = surface_of(M, P.y);
+    const double F = yield_function(P.sigma, S);
+    const double tol = yield_tolerance(M, P.sigma);
+    if (F <= tol && !(force_first && step == 0)) return true;
+    const Flow f = flow_of(M, P.sigma, S, P.y.open);
+    const double scale = std::max(P.sigma.norm(), 1e-3 * M.stress_scale);
+    double dl = 0.05 * scale / std::max(f.k_A_m.norm(), kTiny);
+    const double ds_rate = std::abs(f.gI / M.p.GIC + f.gII / M.p.GIIC);
+    if (S.s > 0 && ds_rate > 0) dl = std::min(dl, 0.05 * std::max(S.s, 1e-3) / ds_rate);
+    if (M.p.m * f.gIII > 0) dl = std::min(dl, 0.05 / (M.p.m * f.gIII));
+    if (F > tol && f.denominator > 0) dl = std::min(dl, F / f.denominator);
+    if (!(dl > 0) || !std::isfinite(dl)) return false;
+    Point Q = relaxation_step(M, P, dl);
+    double FQ = yield_of(M, Q);
+    if (FQ < -yield_tolerance(M, Q.sigma) && F > tol) {
+      // Pegasus on the fraction of the step.
+      double x0 = 0, f0 = F, x1 = 1, f1 = FQ;
+      for (int it = 0; it < 60; ++it) {
+        const double x = x1 - f1 * (x1 - x0) / (f1 - f0);
+        Q = relaxation_step(M, P, x * dl);
+        const double fx = yield_of(M, Q);
+        if (std::abs(fx) <= yield_tolerance(M, Q.sigma)) break;
+        if (fx * f1 < 0) { x0 = x1; f0 = f1; } else { f0 *= f1 / (f1 + fx); }
+        x1 = x;
+        f1 = fx;
+      }
+    }
+    P = Q;
+  }
+  return false;
+}
+
+// Drift correction after an accepted substep (Sloan et al. 2001): the
+// consistent correction along the flow direction, with the hardening it
+// implies; where that does not reduce |F|, a projection normal to the
+// surface, realised as a plastic displacement so that Eq. 1 still holds.
+void correct_drift(const Model& M, Point& P) {
+  for (int it = 0; it < 8; ++it) {
+    const Surface S = surface_of(M, P.y);
+    const double F = yield_function(P.sigma, S);
+    if (std::abs(F) <= yield_tolerance(M, P.sigma)) return;
+    const Flow f = flow_of(M, P.sigma, S, P.y.open);
+    const Vec3 e0 = P.y.elastic_separation();
+    if (f.denominator > 0) {
+      Point C = P;
+      add(C, along_flow(M, P.sigma, f, F / f.denominator), 1.0);
+      settle(M, C, e0);
+      if (std::abs(yield_of(M, C)) < std::abs(F)) {
+        P = C;
+        continue;
+      }
+    }
+    const double nn = f.dF.squaredNorm();
+    if (!(nn > 0)) return;
+    const double h = P.y.open ? 1.0 : 0.0;
+    const Vec3 kA(M.p.kn * (1 + h * M.p.bn), M.p.ks * (1 + h * M.p.bs), M.p.ks * (1 + h * M.p.bs));
+    Point C = P;
+    const Vec3 dp = (F / nn) * f.dF.cwiseQuotient(kA);
+    C.y.plastic += dp;
+    C.y.crack += crack_ratio(M).cwiseProduct(dp);
+    C.y.dissipation_plastic += P.sigma.dot(dp);
+    C.sigma -= (F / nn) * f.dF;
+    settle(M, C, e0);
+    if (!(std::abs(yield_of(M, C)) < std::abs(F))) return;
+    P = C;
+  }
+}
+
+bool crosses(bool open, double e_n) { return open ? e_n < 0 : e_n > 0; }
+
+struct Stepper {
+  const Model& M;
+  Point& P;
+  IntegrationStatus& st;
+  bool at_boundary = false;
+
+  int substeps() const { return st.substeps_accepted + st.substeps_rejected; }
+
+  // Plastic substepping over the separation increment d, starting on the
+  // surface. Returns the fraction of d done: 1, or less when the regime
+  // switched inside (the point is then on the regime boundary).
+  double plastic(const Vec3& d) {
+    const Controls& c = M.controls;
+    const bool heun = c.scheme == Scheme::modified_euler;
+    double T = 0, dT = 1;
+    bool last_rejected = false;
+    int cuts = 0;
+    while (T < 1) {
+      if (substeps() >= c.max_substeps) {
+        st.failure = Failure::too_many_substeps;
+        return T;
+      }
+      dT = std::min(dT, 1 - T);
+      const Vec3 dd = dT * d;
+      const Rates r1 = stage(M, P, dd);
+      if (r1.snapback) {
+        if (!relax(M, P, st, true)) { st.failure = Failure::relaxation_failed; return T; }
+        continue;
+      }
+      Point A = P;
+      add(A, r1, 1.0);
+      A.y.separation += dd;
+      Point N = A;
+      double err = 0;
+      if (heun) {
+        const Rates r2 = stage(M, A, dd);
+        if (r2.snapback) {  // the stage entered the snap-back region: shorter step
+          if (dT > c.min_substep) {
+            dT = std::max(0.5 * dT, c.min_substep);
+            ++st.substeps_rejected;
+            continue;
+          }
+          if (!relax(M, P, st, true)) { st.failure = Failure::relaxation_failed; return T; }
+          continue;
+        }
+        N = P;
+        add(N, r1, 0.5);
+        add(N, r2, 0.5);
+        N.y.separation += dd;
+        err = local_error(r1, r2, N);
+        if (err > c.stol && dT > c.min_substep) {
+          dT = std::max(std::max(0.9 * std::sqrt(c.stol / err), 0.1) * dT, c.min_substep);
+          last_rejected = true;
+          ++st.substeps_rejected;
+          continue;
+        }
+        if (err > c.stol) st.min_substep_hit = true;
+      }
+      // A switch of regime inside the substep: cut the substep to end at the
+      // boundary (linear estimate of where delta_e_n = 0), then switch there.
+      const double e0 = P.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
+      bool switch_here = false;
+      if (crosses(P.y.open, e1)) {
+        const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(N.y);
+        if (std::abs(e1) > near && cuts < kMaxCrossingCuts && e0 != e1) {
+          dT *= std::clamp(e0 / (e0 - e1), 1e-6, 1.0);
+          ++cuts;
+          continue;
+        }
+        switch_here = true;
+      }
+      cuts = 0;
+      const Vec3 e_start = P.y.elastic_separation();
+      P = N;
+      if (switch_here) P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
+      settle(M, P, e_start);
+      if (heun) correct_drift(M, P);
+      ++st.substeps_accepted;
+      T += dT;
+      if (switch_here) {
+        at_boundary = true;
+        return std::min(T, 1.0);
+      }
+      if (heun) {
+        double q = std::min(0.9 * std::sqrt(c.stol / std::max(err, kTiny)), 1.1);
+        if (last_rejected) q = std::min(q, 1.0);
+        dT = std::max(q * dT, c.min_substep);
+        last_rejected = false;
+      } else {
+        dT = 1;
+      }
+    }
+    return 1;
+  }
+
+  // Local error of the Heun pair relative to the end values (Sloan et al.
+  // 2001, Eq. for R_n+1), over the traction, the softening factor and the
+  // wear exponent; the traction norm is floored at 1e-3 ft0 so that states
+  // near zero traction do not force endless subdivision.
+  double local_error(const Rates& r1, const Rates& r2, const Point& N) const {
+    const double floor = 1e-3 * M.stress_scale;
+    const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
+    const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M.p.GIC + (r2.dwII - r1.dwII) / M.p.GIIC);
+    const double e_t = 0.5 * M.p.m * std::abs(r2.dwIII - r1.dwIII);
+    return std::max(e_sigma, std::max(e_s, e_t));
+  }
+
+  double boundary_eps(const State& y) const {
+    return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.p.ft0 / M.p.kn});
+  }
+
+  // One segment of constant regime over the separation increment `rest`.
+  // An elastic path would reach the regime boundary at the fraction `frac`
+  // (1 when it does not); the plastic part is integrated over all of `rest`
+  // and finds its own boundary crossing. Returns the fraction of `rest` done;
+  // sets at_boundary when it stopped on the boundary.
+  double segment(const Vec3& rest, double frac, bool boundary) {
+    at_boundary = false;
+    const Vec3 K = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open);
+    const Vec3 e0 = P.y.elastic_separation();
+    const Surface S = surface_of(M, P.y);
+    auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
+    auto tol_at = [&](double a) { return yield_tolerance(M, K.cwiseProduct(e0 + a * rest)); };
+    const double F0 = yield_function(P.sigma, S), tol0 = tol_at(0);
+    const Vec3 n = flow_of(M, P.sigma, S, P.y.open).dF;
+    const Vec3 dsig = K.cwiseProduct(rest);
+    const bool on_surface = std::abs(F0) <= tol0;
+    const bool loading = n.dot(dsig) > 0;
+    const bool at_edge = frac * std::abs(rest[0]) <= boundary_eps(P.y);
+    if (F_at(frac) <= tol_at(frac) && !(on_surface && loading && at_edge)) {
+      P.y.separation += frac * rest;
+      P.sigma = traction_of(M, P.y);
+      at_boundary = boundary;
+      return frac;
+    }
+    double a_y = 0;
+    if (F0 > tol0 && M.controls.scheme == Scheme::modified_euler) {
+      if (!relax(M, P, st, false)) { st.failure = Failure::relaxation_failed; return 0; }
+    } else if (F0 < -tol0) {
+      a_y = pegasus(F_at, tol_at, 0, F0, frac, F_at(frac));
+    } else if (on_surface && n.dot(dsig) < -1e-9 * n.norm() * dsig.norm()) {
+      // On the surface but unloading first: reloading inside the same
+      // increment? Scan for the first fraction with F < 0 (Sloan et al.).
+      for (int i = 1; i <= 10; ++i) {
+        const double a = 0.1 * i * frac;
+        if (F_at(a) < -tol_at(a)) {
+          a_y = pegasus(F_at, tol_at, a, F_at(a), frac, F_at(frac));
+          break;
+        }
+      }
+    }
+    if (a_y > 0) {
+      P.y.separation += a_y * rest;
+      P.sigma = traction_of(M, P.y);
+    }
+    st.plastic = true;
+    const double done = plastic((1 - a_y) * rest);
+    return a_y + (1 - a_y) * done;
+  }
+
+  template <class Fn, class Tol>
+  static double pegasus(Fn F, Tol tol, double x0, double f0, double x1, double f1) {
+    for (int it = 0; it < 100; ++it) {
+      const double x = x1 - f1 * (x1 - x0) / (f1 - f0);
+      const double fx = F(x);
+      if (std::abs(fx) <= tol(x)) return x;
+      if (fx * f1 < 0) { x0 = x1; f0 = f1; } else { f0 *= f1 / (f1 + fx); }
+      x1 = x;
+      f1 = fx;
+    }
+    return x1;
+  }
+
+  // Switch of the unilateral regime at the current separation (Eq. 13): the
+  // stiffness jumps, the traction is re-derived from Eq. 1, the elastic
+  // energy that the jump removes (opening) or adds (closing) is booked, and a
+  // closing that lands outside the surface returns to it at fixed separation.
+  bool switch_regime() {
+    const double before = elastic_energy(M, P.y);
+    P.y.open = !P.y.open;
+    P.y.energy_unilateral += before - elastic_energy(M, P.y);
+    ++st.regime_switches;
+    settle(M, P, P.y.elastic_separation());
+    if (yield_of(M, P) > yield_tolerance(M, P.sigma)) return relax(M, P, st, false);
+    return true;
+  }
+};
+
+bool finite(const State& s) {
+  return check_state(s) == nullptr;
+}
+
+}  // namespace
+
+IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d) {
+  IncrementResult res;
+  IntegrationStatus& st = res.status;
+  auto fail = [&](Failure f) {
+    st.failure = f;
+    state.status = static_cast<int>(f);
+    state.substeps_accepted = st.substeps_accepted;
+    state.substeps_rejected = st.substeps_rejected;
+    res.traction = check_state(state) ? Vec3::Zero() : traction_of(M, state);
+    res.elastic_energy = check_state(state) ? 0.0 : elastic_energy(M, state);
+    return res;
+  };
+  if (check_state(state)) return fail(Failure::invalid_state);
+  if (!d.allFinite()) return fail(Failure::non_finite_increment);
+
+  Point P{state, traction_of(M, state)};
+  Stepper step{M, P, st};
+  const Vec3 sep_end = state.separation + d;
+  double left = 1;  // fraction of d still to integrate
+  for (int seg = 0; left > 1e-15; ++seg) {
+    if (seg >= kMaxSegments) return fail(Failure::too_many_switches);
+    const double e_n = P.y.elastic_separation()[0];
+    const double eps = step.boundary_eps(P.y);
+    // Regime flag inconsistent with the sign of delta_e_n (beyond round-off):
+    // switch before integrating.
+    if ((P.y.open && e_n < -eps) || (!P.y.open && e_n > eps)) {
+      if (!step.switch_regime()) return fail(Failure::relaxation_failed);
+      continue;
+    }
+    const Vec3 rest = left * d;
+    // Where an elastic path would cross delta_e_n = 0.
+    double frac = 1;
+    bool boundary = false;
+    if (crosses(P.y.open, e_n + rest[0]) && std::abs(e_n + rest[0]) > eps) {
+      frac = std::clamp(-e_n / rest[0], 0.0, 1.0);
+      boundary = true;
+    }
+    const double done = step.segment(rest, frac, boundary);
+    if (!st.ok()) return fail(st.failure);
+    left *= 1 - done;
+    if (step.at_boundary && !step.switch_regime()) return fail(Failure::relaxation_failed);
+  }
+  // The pieces add up to d up to round-off; land exactly on the end point.
+  if (P.y.separation != sep_end) {
+    P.y.separation = sep_end;
+    P.sigma = traction_of(M, P.y);
+  }
+  if (!finite(P.y) || !P.sigma.allFinite()) return fail(Failure::non_finite_result);
+
+  res.d_dissipation_plastic = P.y.dissipation_plastic - state.dissipation_plastic;
+  res.d_dissipation_damage = P.y.dissipation_damage - state.dissipation_damage;
+  res.d_energy_unilateral = P.y.energy_unilateral - state.energy_unilateral;
+  P.y.substeps_accepted = st.substeps_accepted;
+  P.y.substeps_rejected = st.substeps_rejected;
+  P.y.status = 0;
+  state = P.y;
+  res.traction = P.sigma;
+  res.elastic_energy = elastic_energy(M, state);
+  return res;
+}
+
+}  // namespace mortar

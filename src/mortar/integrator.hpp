@@ -1,0 +1,87 @@
+// Stress integration of one increment for one interface point (MODEL.md 7),
+// and the same over a block of points in the solver's array layout.
+#pragma once
+
+#include "mortar/parameters.hpp"
+#include "mortar/state.hpp"
+#include "mortar/surface.hpp"
+
+namespace mortar {
+
+// Why an increment failed. Stored (as a number) in state slot 21.
+enum class Failure : int {
+  none = 0,
+  too_many_substeps = 1,     // accepted + rejected substeps exceeded Controls::max_substeps
+  relaxation_failed = 2,     // return at fixed separation found no surface point
+  too_many_switches = 3,     // more open/closed switches in one increment than allowed
+  non_finite_increment = 4,  // the separation increment holds NaN or infinity
+  invalid_state = 5,         // the incoming state breaks a rule (see check_state)
+  non_finite_result = 6,     // a guard: never returned, the start state is kept instead
+};
+const char* failure_name(Failure f);
+
+struct IntegrationStatus {
+  int substeps_accepted = 0;
+  int substeps_rejected = 0;
+  int regime_switches = 0;    // open <-> closed inside the increment
+  int relaxations = 0;        // returns at fixed separation (closure jump, snap-back)
+  bool plastic = false;       // any plastic flow in the increment
+  bool min_substep_hit = false;  // a substep was accepted at the minimum size above STOL
+  Failure failure = Failure::none;
+  bool ok() const { return failure == Failure::none; }
+};
+
+// Result of one increment: the traction at its end and the energy terms.
+struct IncrementResult {
+  Vec3 traction = Vec3::Zero();   // law signs: sigma_n > 0 tension
+  double elastic_energy = 0;      // at the end of the increment [N/mm]
+  double d_dissipation_plastic = 0;
+  double d_dissipation_damage = 0;
+  double d_energy_unilateral = 0;
+  IntegrationStatus status;
+};
+
+// The first rule the state breaks, or nullptr: finite values, 0 <= d <= 1,
+// works >= 0, open flag 0 or 1.
+const char* check_state(const State& s);
+
+// Integrates the separation increment d_separation (law signs) from `state`
+// and overwrites `state` with the end state. On failure the state is left as
+// it was and the result holds the start traction; nothing returned is ever
+// NaN or infinite.
+IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation);
+
+// Block of points in the solver layout: separation increments (n_dir x
+// n_points, column-major, law signs), state (n_states x n_points), traction
+// out (n_dir x n_points). n_dir is 2 (one slip) or 3. Per-point energies are
+// optional (nullptr to skip). Returns the number of points that failed; each
+// failed point keeps its start state and carries its Failure in slot 21.
+struct BlockOutputs {
+  double* elastic_energy = nullptr;      // n_points
+  double* d_dissipation = nullptr;       // n_points: plastic + damage + unilateral
+};
+
+template <class Real>
+int integrate_block(const Model& model, int n_points, int n_dir, int n_states,
+                    const Real* d_separation, Real* state, Real* traction,
+                    BlockOutputs out = {}) {
+  int failures = 0;
+  for (int k = 0; k < n_points; ++k) {
+    State s;
+    Real* sk = state + static_cast<long>(k) * n_states;
+    load_state(sk, s);
+    const Real* dsk = d_separation + static_cast<long>(k) * n_dir;
+    const Vec3 d(static_cast<double>(dsk[0]), static_cast<double>(dsk[1]), n_dir > 2 ? static_cast<double>(dsk[2]) : 0.0);
+    IncrementResult r = integrate_increment(model, s, d);
+    store_state(s, sk);
+    Real* tk = traction + static_cast<long>(k) * n_dir;
+    for (int i = 0; i < n_dir; ++i) tk[i] = Real(r.traction[i]);
+    if (out.elastic_energy) out.elastic_energy[k] = r.elastic_energy;
+    if (out.d_dissipation)
+      out.d_dissipation[k] = r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral;
+    if (!r.status.ok()) ++failures;
+  }
+  return failures;
+}
+
+}  // namespace mortar

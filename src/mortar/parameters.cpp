@@ -1,0 +1,162 @@
+#include "mortar/parameters.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace mortar {
+
+const std::array<ParameterInfo, kParameterCount> kParameterInfo = {{
+    {"kn", "N/mm^3", "normal stiffness of the undamaged joint"},
+    {"ks", "N/mm^3", "shear stiffness (both tangents)"},
+    {"ft0", "MPa", "initial tensile strength"},
+    {"c0", "MPa", "initial cohesion"},
+    {"GIC", "N/mm", "mode I fracture energy"},
+    {"GIIC", "N/mm", "mode II fracture energy"},
+    {"phi0", "deg", "initial friction angle"},
+    {"phir", "deg", "residual friction angle"},
+    {"m", "mm/N", "decay constant of the friction angle"},
+    {"psi0", "deg", "initial dilatancy angle"},
+    {"psir", "deg", "residual dilatancy angle"},
+    {"n", "mm/N", "decay constant of the dilatancy angle"},
+    {"bn", "-", "crack-to-plastic ratio, normal"},
+    {"bs", "-", "crack-to-plastic ratio, shear"},
+}};
+
+namespace {
+double* slot(Parameters& p, int i) {
+  double* table[kParameterCount] = {&p.kn,   &p.ks,   &p.ft0, &p.c0,   &p.GIC,
+                                    &p.GIIC, &p.phi0, &p.phir, &p.m,   &p.psi0,
+                                    &p.psir, &p.n,    &p.bn,  &p.bs};
+  return (i >= 0 && i < kParameterCount) ? table[i] : nullptr;
+}
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+ValidationError fail(int index, const char* name, double value, const char* rule) {
+  return ValidationError{index, name, value, rule};
+}
+ValidationError fail(int index, double value, const char* rule) {
+  return fail(index, kParameterInfo[index].name, value, rule);
+}
+}  // namespace
+
+double& parameter_at(Parameters& p, int index) {
+  double* s = slot(p, index);
+  if (!s) throw std::out_of_range("parameter index out of range");
+  return *s;
+}
+double parameter_at(const Parameters& p, int index) {
+  return parameter_at(const_cast<Parameters&>(p), index);
+}
+int parameter_index(const std::string& name) {
+  for (int i = 0; i < kParameterCount; ++i)
+    if (name == kParameterInfo[i].name) return i;
+  return -1;
+}
+
+const char* scheme_name(Scheme s) {
+  switch (s) {
+    case Scheme::modified_euler: return "modified-euler";
+    case Scheme::forward_euler: return "forward-euler";
+  }
+  return "unknown";
+}
+
+std::string ValidationError::message() const {
+  if (ok()) return "valid";
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "'%s' (props(%d)) = %.9g violates the rule: %s", name,
+                index + 1, value, rule);
+  return buf;
+}
+
+ValidationError validate(const Parameters& p) {
+  // Every value must be a finite number before any rule can be read.
+  for (int i = 0; i < kParameterCount; ++i) {
+    double v = parameter_at(p, i);
+    if (!std::isfinite(v)) return fail(i, v, "must be a finite number");
+  }
+  if (!(p.kn > 0)) return fail(0, p.kn, "kn > 0");
+  if (!(p.ks > 0)) return fail(1, p.ks, "ks > 0");
+  if (!(p.ft0 > 0)) return fail(2, p.ft0, "ft0 > 0");
+  if (!(p.c0 > 0)) return fail(3, p.c0, "c0 > 0");
+  if (!(p.GIC > 0)) return fail(4, p.GIC, "GIC > 0");
+  if (!(p.GIIC > 0)) return fail(5, p.GIIC, "GIIC > 0");
+  if (!(p.phi0 < 90)) return fail(6, p.phi0, "phi0 < 90 degrees");
+  if (!(p.phir > 0)) return fail(7, p.phir, "phir > 0 degrees");
+  if (!(p.phir <= p.phi0)) return fail(7, p.phir, "phir <= phi0");
+  if (!(p.m >= 0)) return fail(8, p.m, "m >= 0");
+  if (!(p.psi0 < 90)) return fail(9, p.psi0, "psi0 < 90 degrees");
+  if (!(p.psir >= 0)) return fail(10, p.psir, "psir >= 0 degrees");
+  if (!(p.psir <= p.psi0)) return fail(10, p.psir, "psir <= psi0");
+  if (!(p.n >= 0)) return fail(11, p.n, "n >= 0");
+  if (!(p.bn >= 0)) return fail(12, p.bn, "bn >= 0");
+  if (!(p.bs >= 0)) return fail(13, p.bs, "bs >= 0");
+  // Eq. 3 needs beta > alpha >= 0, i.e. c0^2 >= (ft0 tan phi)^2 for every
+  // tan phi in [tan phir, tan phi0]; strictness keeps the hyperbola proper.
+  if (!(p.c0 > p.ft0 * std::tan(p.phi0 * kDegree)))
+    return fail(3, p.c0, "c0 > ft0*tan(phi0), without which the hyperbola of Eq. 2-3 does not exist");
+  return {};
+}
+
+ValidationError validate(const Controls& c) {
+  int s = static_cast<int>(c.scheme);
+  if (s != 1 && s != 2) return fail(14, "scheme", s, "scheme is 1 (modified Euler) or 2 (forward Euler)");
+  if (!(c.stol > 0 && c.stol < 1)) return fail(15, "stol", c.stol, "0 < STOL < 1");
+  if (!(c.ftol > 0 && c.ftol < 1)) return fail(16, "ftol", c.ftol, "0 < FTOL < 1");
+  if (!(c.max_substeps >= 1)) return fail(17, "max_substeps", c.max_substeps, "max substeps >= 1");
+  if (!(c.min_substep > 0 && c.min_substep <= 1))
+    return fail(18, "min_substep", c.min_substep, "0 < minimum substep <= 1");
+  return {};
+}
+
+ValidationError read_props(const double* props, int n_props, Parameters& p, Controls& c) {
+  if (n_props < kParameterCount)
+    return fail(n_props, "nProps", n_props, "nProps >= 14 (the 14 parameters of Table 1)");
+  for (int i = 0; i < kParameterCount; ++i) parameter_at(p, i) = props[i];
+  ValidationError e = validate(p);
+  if (!e.ok()) return e;
+  c = Controls{};
+  // Optional controls: props(15) scheme, (16) STOL, (17) FTOL, (18) max
+  // substeps, (19) minimum substep. A zero keeps the default.
+  auto opt = [&](int i) { return i < n_props ? props[i] : 0.0; };
+  for (int i = kParameterCount; i < n_props && i < 19; ++i)
+    if (!std::isfinite(props[i])) return fail(i, "control", props[i], "must be a finite number");
+  if (double v = opt(14); v != 0) {
+    if (v != 1 && v != 2) return fail(14, "scheme", v, "scheme is 1 (modified Euler) or 2 (forward Euler)");
+    c.scheme = static_cast<Scheme>(static_cast<int>(v));
+  }
+  if (double v = opt(15); v != 0) c.stol = v;
+  if (double v = opt(16); v != 0) c.ftol = v;
+  if (double v = opt(17); v != 0) {
+    if (v != std::floor(v) || v > 1e9) return fail(17, "max_substeps", v, "a whole number <= 1e9");
+    c.max_substeps = static_cast<int>(v);
+  }
+  if (double v = opt(18); v != 0) c.min_substep = v;
+  return validate(c);
+}
+
+Model make_model(const Parameters& p, const Controls& c) {
+  Model m;
+  m.p = p;
+  m.controls = c;
+  m.tan_phi0 = std::tan(p.phi0 * kDegree);
+  m.tan_phir = std::tan(p.phir * kDegree);
+  m.tan_psi0 = std::tan(p.psi0 * kDegree);
+  m.tan_psir = std::tan(p.psir * kDegree);
+  m.cohesion_term = p.c0 * p.c0 / p.ft0;
+  m.alpha0 = 0.5 * (m.cohesion_term / m.tan_phi0 - p.ft0 * m.tan_phi0);
+  m.beta0 = 0.5 * (m.cohesion_term / m.tan_phi0 + p.ft0 * m.tan_phi0);
+  m.stress_scale = p.ft0;
+  return m;
+}
+
+Model make_model_checked(const Parameters& p, const Controls& c) {
+  ValidationError e = validate(p);
+  if (e.ok()) e = validate(c);
+  if (!e.ok()) throw std::invalid_argument(e.message());
+  return make_model(p, c);
+}
+
+}  // namespace mortar

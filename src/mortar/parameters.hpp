@@ -1,0 +1,96 @@
+// The 14 material parameters of the mortar-joint law (paper Table 1) and the
+// integration controls that may follow them in the Abaqus props array.
+#pragma once
+
+#include <array>
+#include <string>
+
+namespace mortar {
+
+// Table 1 of the paper, in its order (= Abaqus props(1..14)). Units N, mm, MPa.
+struct Parameters {
+  double kn = 0;    // normal stiffness of the undamaged joint      [N/mm^3]  > 0
+  double ks = 0;    // shear stiffness (both tangents)               [N/mm^3]  > 0
+  double ft0 = 0;   // initial tensile strength                      [MPa]     > 0
+  double c0 = 0;    // initial cohesion                              [MPa]     > ft0*tan(phi0)
+  double GIC = 0;   // mode I fracture energy                        [N/mm]    > 0
+  double GIIC = 0;  // mode II fracture energy                       [N/mm]    > 0
+  double phi0 = 0;  // initial friction angle                        [deg]     phir <= phi0 < 90
+  double phir = 0;  // residual friction angle                       [deg]     0 < phir
+  double m = 0;     // decay constant of the friction angle          [mm/N]    >= 0
+  double psi0 = 0;  // initial dilatancy angle                       [deg]     psir <= psi0 < 90
+  double psir = 0;  // residual dilatancy angle                      [deg]     >= 0
+  double n = 0;     // decay constant of the dilatancy angle         [mm/N]    >= 0
+  double bn = 0;    // crack-to-plastic ratio, normal                [-]       >= 0
+  double bs = 0;    // crack-to-plastic ratio, shear                 [-]       >= 0
+};
+
+inline constexpr int kParameterCount = 14;
+
+struct ParameterInfo {
+  const char* name;
+  const char* unit;
+  const char* meaning;
+};
+// Name, unit and meaning of each parameter, in Table 1 order.
+extern const std::array<ParameterInfo, kParameterCount> kParameterInfo;
+
+// Access by Table 1 position (0-based) so that props arrays and named files
+// share one mapping.
+double& parameter_at(Parameters& p, int index);
+double parameter_at(const Parameters& p, int index);
+// Index of a parameter by its name ("kn", "GIC", ...), or -1.
+int parameter_index(const std::string& name);
+
+// Stress-integration scheme (MODEL.md section 7).
+enum class Scheme : int {
+  modified_euler = 1,  // Sloan, Abbo & Sheng (2001): Heun pair, error control (default)
+  forward_euler = 2,   // one explicit step, no error control (baseline)
+};
+const char* scheme_name(Scheme s);
+
+// Integration controls; props(15..19) in the Abaqus adapters, 0 there = default.
+struct Controls {
+  Scheme scheme = Scheme::modified_euler;
+  double stol = 1e-5;        // relative local error tolerance of a substep
+  double ftol = 1e-8;        // yield-surface tolerance, relative to max(|sigma|, ft0)
+  double min_substep = 1e-6; // smallest substep, as a fraction of the increment
+  int max_substeps = 100000; // accepted + rejected substeps allowed per increment
+};
+
+// The first rule a parameter or control breaks; ok() when none.
+struct ValidationError {
+  int index = -1;            // 0-based position in the props array, -1 when ok
+  const char* name = "";     // parameter or control name
+  double value = 0;          // offending value
+  const char* rule = "";     // the rule it breaks
+  bool ok() const { return index < 0; }
+  std::string message() const;  // "parameter 'c0' (props(4)) = 0.1 violates ..."
+};
+
+// Validates per MODEL.md section 2. Non-throwing; cheap enough for every call.
+ValidationError validate(const Parameters& p);
+ValidationError validate(const Controls& c);
+
+// Reads props(1..14) and optional controls from props(15..19). Returns the
+// first violation (including too few props); does not throw.
+ValidationError read_props(const double* props, int n_props, Parameters& p, Controls& c);
+
+// Parameters plus the values derived from them once (tangents of the angles,
+// alpha and beta of the undamaged surface), and the integration controls.
+struct Model {
+  Parameters p;
+  Controls controls;
+  double tan_phi0 = 0, tan_phir = 0, tan_psi0 = 0, tan_psir = 0;
+  double cohesion_term = 0;  // c0^2 / ft0, so that alpha, beta = s*(C/tanphi -/+ ft0*tanphi)/2
+  double alpha0 = 0, beta0 = 0;  // Eq. 3 at s = 1, tanphi = tanphi0
+  double stress_scale = 0;       // ft0: reference for tolerances and floors [MPa]
+};
+
+// Builds a Model from validated inputs (call validate first). Non-throwing.
+Model make_model(const Parameters& p, const Controls& c = Controls{});
+// Throwing convenience for C++ callers (harness, tests): std::invalid_argument
+// with ValidationError::message().
+Model make_model_checked(const Parameters& p, const Controls& c = Controls{});
+
+}  // namespace mortar

@@ -1,0 +1,103 @@
+// State of one interface point, and its named layout over the solver-owned
+// flat array (MODEL.md section 3; positions 1-14 are a user-facing contract).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace mortar {
+
+using Vec3 = Eigen::Vector3d;  // (n, s1, s2) components
+
+// Positions in the flat state array, 0-based (docs and Abaqus SDV numbers are
+// these + 1). 1-14 as MODEL.md section 3; 15 onwards implementation-defined.
+namespace slot {
+enum : int {
+  plastic_n = 0, plastic_s1, plastic_s2,  // 1-3   delta_p            [mm]
+  crack_n, crack_s1, crack_s2,            // 4-6   delta_cr           [mm]
+  work_I,                                 // 7     w_I                [N/mm]
+  work_II,                                // 8     w_II               [N/mm]
+  work_III,                               // 9     w_III              [N/mm]
+  damage_n,                               // 10    d_n                [-]
+  damage_s,                               // 11    d_s                [-]
+  separation_n, separation_s1, separation_s2,  // 12-14 delta         [mm]
+  open,                                   // 15    1 open (h = 1), 0 closed
+  dissipation_plastic,                    // 16    sum sigma . d(delta_p)           [N/mm]
+  dissipation_damage,                     // 17    sum 1/2 h k (delta_e)^2 dd       [N/mm]
+  energy_unilateral,                      // 18    elastic energy lost at regime switches [N/mm]
+  substeps_accepted,                      // 19    last increment
+  substeps_rejected,                      // 20    last increment
+  status,                                 // 21    last increment: 0 ok, else Failure code
+  reference_penetration,                  // 22    Abaqus adapter: penetration at first call [mm]
+  initialised,                            // 23    Abaqus adapter: 1 once the reference is set
+  count                                   // = 23 state variables
+};
+}  // namespace slot
+inline constexpr int kStateCount = slot::count;
+// The law itself uses slots 1-21; the adapters add 22-23.
+inline constexpr int kLawStateCount = slot::reference_penetration;
+
+// The value type the law works on (always double precision).
+struct State {
+  Vec3 plastic = Vec3::Zero();     // delta_p
+  Vec3 crack = Vec3::Zero();       // delta_cr
+  double wI = 0, wII = 0, wIII = 0;
+  double dn = 0, ds = 0;
+  Vec3 separation = Vec3::Zero();  // delta, since the reference state
+  bool open = false;               // unilateral regime h (Eq. 13)
+  double dissipation_plastic = 0;
+  double dissipation_damage = 0;
+  double energy_unilateral = 0;
+  int substeps_accepted = 0;
+  int substeps_rejected = 0;
+  int status = 0;
+
+  Vec3 elastic_separation() const { return separation - plastic; }
+};
+
+// Named mapping between State and the flat array of one point (any precision).
+template <class Real>
+void load_state(const Real* a, State& s) {
+  auto v3 = [&](int i) { return Vec3(double(a[i]), double(a[i + 1]), double(a[i + 2])); };
+  s.plastic = v3(slot::plastic_n);
+  s.crack = v3(slot::crack_n);
+  s.wI = double(a[slot::work_I]);
+  s.wII = double(a[slot::work_II]);
+  s.wIII = double(a[slot::work_III]);
+  s.dn = double(a[slot::damage_n]);
+  s.ds = double(a[slot::damage_s]);
+  s.separation = v3(slot::separation_n);
+  s.open = double(a[slot::open]) != 0.0;
+  s.dissipation_plastic = double(a[slot::dissipation_plastic]);
+  s.dissipation_damage = double(a[slot::dissipation_damage]);
+  s.energy_unilateral = double(a[slot::energy_unilateral]);
+  s.substeps_accepted = int(a[slot::substeps_accepted]);
+  s.substeps_rejected = int(a[slot::substeps_rejected]);
+  s.status = int(a[slot::status]);
+}
+
+template <class Real>
+void store_state(const State& s, Real* a) {
+  auto put3 = [&](int i, const Vec3& v) {
+    for (int k = 0; k < 3; ++k) a[i + k] = Real(v[k]);
+  };
+  put3(slot::plastic_n, s.plastic);
+  put3(slot::crack_n, s.crack);
+  a[slot::work_I] = Real(s.wI);
+  a[slot::work_II] = Real(s.wII);
+  a[slot::work_III] = Real(s.wIII);
+  a[slot::damage_n] = Real(s.dn);
+  a[slot::damage_s] = Real(s.ds);
+  put3(slot::separation_n, s.separation);
+  a[slot::open] = Real(s.open ? 1 : 0);
+  a[slot::dissipation_plastic] = Real(s.dissipation_plastic);
+  a[slot::dissipation_damage] = Real(s.dissipation_damage);
+  a[slot::energy_unilateral] = Real(s.energy_unilateral);
+  a[slot::substeps_accepted] = Real(s.substeps_accepted);
+  a[slot::substeps_rejected] = Real(s.substeps_rejected);
+  a[slot::status] = Real(s.status);
+}
+
+// Short names of the state variables in slot order (for CSV headers, docs).
+extern const char* const kStateNames[kStateCount];
+
+}  // namespace mortar
