@@ -60,7 +60,6 @@ struct Rates {
   bool snapback = false;  // no strain-driven solution: consistency denominator <= 0
 };
 
-Vec3 kbar(const Model& M) { return Vec3(M.p.kn, M.p.ks, M.p.ks); }
 Vec3 crack_ratio(const Model& M) { return Vec3(M.p.bn, M.p.bs, M.p.bs); }
 
 // The working point: state + the traction that goes with it.
@@ -96,8 +95,9 @@ Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
 //   dsigma = kbar (dd - (I + h b) m dl), dl from the consistency condition.
 Rates stage(const Model& M, const Point& P, const Vec3& dd) {
   const Surface S = surface_of(M, P.y);
-  const Flow f = flow_of(M, P.sigma, S, P.y.open);
-  const double num = f.dF.dot(kbar(M).cwiseProduct(dd));
+  const Vec3 k = rate_stiffness(M, P.y);
+  const Flow f = flow_of(M, P.sigma, S, P.y.open, k);
+  const double num = f.dF.dot(k.cwiseProduct(dd));
   Rates r;
   if (num <= 0) {  // unloading inside the step: secant elasticity
     r.dsigma = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
@@ -109,7 +109,7 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd) {
     return r;
   }
   r = along_flow(M, P.sigma, f, num / f.denominator);
-  r.dsigma += kbar(M).cwiseProduct(dd);
+  r.dsigma += k.cwiseProduct(dd);
   return r;
 }
 
@@ -146,7 +146,7 @@ void settle(const Model& M, Point& P, const Vec3& e_start) {
 // Rates of the return at fixed separation, per unit plastic multiplier.
 Rates relaxation_rates(const Model& M, const Point& P, double dl) {
   const Surface S = surface_of(M, P.y);
-  return along_flow(M, P.sigma, flow_of(M, P.sigma, S, P.y.open), dl);
+  return along_flow(M, P.sigma, flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y)), dl);
 }
 
 // Heun step of the return at fixed separation over dl.
@@ -179,7 +179,7 @@ bool relax(const Model& M, Point& P, IntegrationStatus& st, bool force_first) {
     const double F = yield_function(P.sigma, S);
     const double tol = yield_tolerance(M, P.sigma);
     if (F <= tol && !(force_first && step == 0)) return true;
-    const Flow f = flow_of(M, P.sigma, S, P.y.open);
+    const Flow f = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y));
     const double scale = std::max(P.sigma.norm(), 1e-3 * M.stress_scale);
     double dl = 0.05 * scale / std::max(f.k_A_m.norm(), kTiny);
     const double ds_rate = std::abs(f.gI / M.p.GIC + f.gII / M.p.GIIC);
@@ -216,7 +216,7 @@ void correct_drift(const Model& M, Point& P) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
     if (std::abs(F) <= yield_tolerance(M, P.sigma)) return;
-    const Flow f = flow_of(M, P.sigma, S, P.y.open);
+    const Flow f = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y));
     const Vec3 e0 = P.y.elastic_separation();
     if (f.denominator > 0) {
       Point C = P;
@@ -369,7 +369,7 @@ struct Stepper {
     auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
     auto tol_at = [&](double a) { return yield_tolerance(M, K.cwiseProduct(e0 + a * rest)); };
     const double F0 = yield_function(P.sigma, S), tol0 = tol_at(0);
-    const Vec3 n = flow_of(M, P.sigma, S, P.y.open).dF;
+    const Vec3 n = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y)).dF;
     const Vec3 dsig = K.cwiseProduct(rest);
     const bool on_surface = std::abs(F0) <= tol0;
     const bool loading = n.dot(dsig) > 0;

@@ -67,7 +67,12 @@ struct Flow {
 // R = sqrt(alpha^2 + tau^2); tau/R is taken as 0 where R = 0 (alpha = 0 and
 // tau = 0: the apex of the fully softened cone, where any subgradient with a
 // zero shear part is admissible).
-inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool open) {
+//
+// k_rate is the stiffness of the rate statement: kbar, with a component set to
+// zero where that component's damage is complete in the open regime (d = 1:
+// the open crack carries no traction in that direction, so its traction rate
+// is zero too; see rate_stiffness).
+inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool open, const Vec3& k_rate) {
   const Parameters& p = M.p;
   Flow f;
   const double tau = shear_norm(sigma);
@@ -87,7 +92,8 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool op
   f.dF = Vec3(S.tan_phi, e1, e2);
   f.m = Vec3(m_n, e1, e2);
   const double h = open ? 1.0 : 0.0;
-  f.k_A_m = Vec3(p.kn * (1 + h * p.bn) * m_n, p.ks * (1 + h * p.bs) * e1, p.ks * (1 + h * p.bs) * e2);
+  f.k_A_m = Vec3(k_rate[0] * (1 + h * p.bn) * m_n, k_rate[1] * (1 + h * p.bs) * e1,
+                 k_rate[2] * (1 + h * p.bs) * e2);
 
   // Works per unit lambda (Eqs. 7-9); the inelastic increment includes the
   // crack part in every regime (Eq. 17).
@@ -107,6 +113,14 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool op
   f.hardening = dF_ds * ds_dl + dF_dt * dt_dl;
   f.denominator = f.dF.dot(f.k_A_m) - f.hardening;
   return f;
+}
+
+// Stiffness of the rate statement (MODEL.md section 6): kbar; in the open
+// regime a component whose damage is complete keeps zero traction, so its
+// rate stiffness is zero as well.
+inline Vec3 rate_stiffness(const Model& M, const State& y) {
+  const bool cut_n = y.open && y.dn >= 1, cut_s = y.open && y.ds >= 1;
+  return Vec3(cut_n ? 0.0 : M.p.kn, cut_s ? 0.0 : M.p.ks, cut_s ? 0.0 : M.p.ks);
 }
 
 // Elastic stiffness of Eq. 21 with the unilateral factor h of the regime.
