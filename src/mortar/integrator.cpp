@@ -113,32 +113,37 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd) {
   return r;
 }
 
-// Damage follows the secant through the plastic displacement while the joint
-// is open (MODEL.md section 6), never decreases, and the traction is then
-// re-derived from Eq. 1 so that traction and state always agree. An open
-// joint with no strength left (s = 0) can only carry zero traction: the
-// surface is the apex, so d = 1. The energy released by the damage growth is
-// booked as damage dissipation (1/2 kbar (delta_e)^2 dd, trapezoidal in
-// delta_e over the step, exact for the jump to d = 1).
+// An open joint with no strength left (s = 0) can only carry zero traction:
+// its surface is the apex of the cone, so the damage is complete (d = 1).
+// The elastic energy this releases is booked as damage dissipation.
+void disintegrate_if_no_strength(const Model& M, State& y) {
+  if (!y.open || surface_of(M, y).s > 0 || (y.dn >= 1 && y.ds >= 1)) return;
+  const Vec3 e = y.elastic_separation();
+  const double es2 = e[1] * e[1] + e[2] * e[2];
+  y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e[0] * e[0] + 0.5 * M.p.ks * (1 - y.ds) * es2;
+  y.dn = 1;
+  y.ds = 1;
+}
+
+// After plastic flow: damage follows the secant through the plastic
+// displacement while the joint is open (MODEL.md section 6), never
+// decreases, and the traction is then re-derived from Eq. 1 so that traction
+// and state always agree. The energy released by the damage growth is booked
+// as damage dissipation, 1/2 kbar (delta_e)^2 dd, trapezoidal in delta_e over
+// the step.
 void settle(const Model& M, Point& P, const Vec3& e_start) {
   State& y = P.y;
-  if (!y.open) {
-    P.sigma = traction_of(M, y);
-    return;
-  }
-  const Vec3 e = y.elastic_separation();
-  const double es = std::hypot(e[1], e[2]), es0 = std::hypot(e_start[1], e_start[2]);
-  double dn = y.dn, ds = y.ds;
-  if (e[0] > 0) dn = std::clamp(1.0 - P.sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
-  if (es > 0) ds = std::clamp(1.0 - shear_norm(P.sigma) / (M.p.ks * es), y.ds, 1.0);
-  y.dissipation_damage += 0.25 * M.p.kn * (dn - y.dn) * (e_start[0] * e_start[0] + e[0] * e[0]) +
-                          0.25 * M.p.ks * (ds - y.ds) * (es0 * es0 + es * es);
-  y.dn = dn;
-  y.ds = ds;
-  if (surface_of(M, y).s <= 0 && (y.dn < 1 || y.ds < 1)) {
-    y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e[0] * e[0] + 0.5 * M.p.ks * (1 - y.ds) * es * es;
-    y.dn = 1;
-    y.ds = 1;
+  if (y.open) {
+    const Vec3 e = y.elastic_separation();
+    const double es = std::hypot(e[1], e[2]), es0 = std::hypot(e_start[1], e_start[2]);
+    double dn = y.dn, ds = y.ds;
+    if (e[0] > 0) dn = std::clamp(1.0 - P.sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
+    if (es > 0) ds = std::clamp(1.0 - shear_norm(P.sigma) / (M.p.ks * es), y.ds, 1.0);
+    y.dissipation_damage += 0.25 * M.p.kn * (dn - y.dn) * (e_start[0] * e_start[0] + e[0] * e[0]) +
+                            0.25 * M.p.ks * (ds - y.ds) * (es0 * es0 + es * es);
+    y.dn = dn;
+    y.ds = ds;
+    disintegrate_if_no_strength(M, y);
   }
   P.sigma = traction_of(M, y);
 }
@@ -427,7 +432,8 @@ struct Stepper {
     P.y.open = !P.y.open;
     P.y.energy_unilateral += before - elastic_energy(M, P.y);
     ++st.regime_switches;
-    settle(M, P, P.y.elastic_separation());
+    disintegrate_if_no_strength(M, P.y);
+    P.sigma = traction_of(M, P.y);
     if (yield_of(M, P) > yield_tolerance(M, P.sigma)) return relax(M, P, st, false);
     return true;
   }

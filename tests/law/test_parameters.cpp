@@ -1,0 +1,93 @@
+// MODEL.md section 2: parameters, their order, validation rules and the
+// values derived from them once.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "mortar/parameters.hpp"
+#include "paper_sets.hpp"
+
+using namespace mortar;
+using namespace mortar::testing;
+
+TEST_CASE("Parameters: props follow Table 1 order and names", "[parameters]") {
+  const double props[14] = {209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3};
+  Parameters p;
+  Controls c;
+  REQUIRE(read_props(props, 14, p, c).ok());
+  const Parameters expected = van_der_pluijm(-0.5);
+  for (int i = 0; i < kParameterCount; ++i) {
+    CAPTURE(i, kParameterInfo[i].name);
+    CHECK(parameter_at(p, i) == parameter_at(expected, i));
+    CHECK(parameter_index(kParameterInfo[i].name) == i);
+  }
+  CHECK(std::string(kParameterInfo[4].name) == "GIC");
+  CHECK(parameter_index("nonsense") == -1);
+  CHECK(c.scheme == Scheme::modified_euler);
+}
+
+TEST_CASE("Parameters: each rule of section 2 is enforced with name, value and rule", "[parameters]") {
+  struct Case {
+    int index;
+    double value;
+    const char* rule_fragment;
+  };
+  const Case cases[] = {
+      {0, 0.0, "kn > 0"},          {1, -1.0, "ks > 0"},      {2, 0.0, "ft0 > 0"},
+      {3, -0.5, "c0 > 0"},         {4, 0.0, "GIC > 0"},      {5, -1e-3, "GIIC > 0"},
+      {6, 90.0, "phi0 < 90"},      {7, 0.0, "phir > 0"},     {7, 45.0, "phir <= phi0"},
+      {8, -1.0, "m >= 0"},         {9, 95.0, "psi0 < 90"},   {10, -1.0, "psir >= 0"},
+      {10, 30.0, "psir <= psi0"},  {11, -2.0, "n >= 0"},     {12, -0.1, "bn >= 0"},
+      {13, -0.1, "bs >= 0"},       {3, 0.5, "c0 > ft0*tan(phi0)"}, {2, NAN, "finite"},
+      {0, INFINITY, "finite"},
+  };
+  for (const Case& k : cases) {
+    Parameters p = van_der_pluijm(-0.5);
+    parameter_at(p, k.index) = k.value;
+    const ValidationError e = validate(p);
+    CAPTURE(k.index, k.value, e.message());
+    REQUIRE_FALSE(e.ok());
+    CHECK(e.index == k.index);
+    CHECK(std::string(e.rule).find(k.rule_fragment) != std::string::npos);
+    CHECK(e.message().find(kParameterInfo[k.index].name) != std::string::npos);
+    CHECK_THROWS_AS(make_model_checked(p), std::invalid_argument);
+  }
+  // Boundaries that are allowed.
+  Parameters p = van_der_pluijm(-0.5);
+  p.phir = p.phi0;
+  p.psir = p.psi0;
+  p.m = p.n = p.bn = p.bs = 0;
+  CHECK(validate(p).ok());
+}
+
+TEST_CASE("Parameters: optional controls from props 15-19, zero keeps the default", "[parameters]") {
+  double props[19] = {209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3,
+                      2, 1e-4, 0, 500, 1e-3};
+  Parameters p;
+  Controls c;
+  REQUIRE(read_props(props, 19, p, c).ok());
+  CHECK(c.scheme == Scheme::forward_euler);
+  CHECK(c.stol == 1e-4);
+  CHECK(c.ftol == Controls{}.ftol);
+  CHECK(c.max_substeps == 500);
+  CHECK(c.min_substep == 1e-3);
+  props[14] = 7;
+  ValidationError e = read_props(props, 19, p, c);
+  CHECK(e.index == 14);
+  props[14] = 1;
+  props[15] = 2;  // STOL must be < 1
+  CHECK(read_props(props, 19, p, c).index == 15);
+  props[15] = 0;
+  props[17] = 2.5;  // not a whole number
+  CHECK(read_props(props, 19, p, c).index == 17);
+  CHECK(read_props(props, 13, p, c).message().find("nProps >= 14") != std::string::npos);
+}
+
+TEST_CASE("Parameters: alpha and beta at s = 1 satisfy Eq. 3", "[parameters]") {
+  const Model M = make_model_checked(van_der_pluijm(-0.5));
+  // c^2 = beta^2 - alpha^2 and ft = (beta - alpha)/tan(phi).
+  CHECK(M.beta0 * M.beta0 - M.alpha0 * M.alpha0 == Approx(0.88 * 0.88).epsilon(1e-14));
+  CHECK((M.beta0 - M.alpha0) / std::tan(40.97 * M_PI / 180) == Approx(0.62).epsilon(1e-14));
+  CHECK(M.alpha0 > 0);
+}
