@@ -8,7 +8,19 @@
  * INTEGER arguments (names i-n) are int.
  *
  * Confidence: [verified] / [transcribed] as in the README section "Using it in
- * Abaqus/Explicit", which also says how to check them against your release.
+ * Abaqus/Explicit" (docs/abaqus.md), which also says how to check them against
+ * your release. In short: the VUINTERACTION list is [verified] up to surfSlv
+ * and [transcribed] from surfMst on; the VUINTER list is [verified].
+ *
+ * Hidden lengths are declared int. gfortran passes them as 8-byte integers
+ * (size_t); other compilers may pass 4 bytes. They come after more than six
+ * arguments, so on x86-64 Linux each sits in its own 8-byte stack slot, and a
+ * little-endian int read of that slot gives the length either way; a size_t
+ * read of a 4-byte argument would not. The routines only use surfInt's
+ * length, clamped to 80, to trim the name in messages.
+ *
+ * What the routines do with the arguments (signs, state layout, energies,
+ * errors) is documented in vuinteraction.cpp and docs/abaqus.md.
  */
 #ifndef MJ_VUINTERACTION_H
 #define MJ_VUINTERACTION_H
@@ -68,6 +80,55 @@ void vuinteraction_(
     const mj_real* tempMst,      /* (nBlockAnal) */
     const mj_real* fieldSlv,     /* (nFields, nBlock) */
     const mj_real* fieldMst,     /* (nFields, nBlockAnal) */
+    /* hidden CHARACTER lengths */
+    int lenSurfInt, int lenSurfSlv, int lenSurfMst);
+
+/* VUINTER: contact pairs. Arrays are column-major with the slave-node index
+ * last; one call covers every node of the slave surface. */
+void vuinter_(
+    /* write only */
+    mj_real* sfd,                /* (nSlvNod) increment of frictional dissipation */
+    mj_real* scd,                /* (nSlvNod) increment of creep dissipation */
+    mj_real* spd,                /* (nSlvNod) increment of plastic dissipation */
+    mj_real* svd,                /* (nSlvNod) increment of viscous dissipation */
+    /* read/write */
+    mj_real* stress,             /* (nDir, nSlvNod) pressure positive, then shear */
+    mj_real* fluxSlv,            /* (nSlvNod) */
+    mj_real* fluxMst,            /* (nSlvNod) */
+    mj_real* sed,                /* (nSlvNod) elastic energy density */
+    mj_real* statev,             /* (nStateVar, nSlvNod) */
+    /* read only */
+    const int* kStep, const int* kInc,
+    const int* nFacNod, const int* nSlvNod, const int* nMstNod,
+    const int* nSurfDir, const int* nDir, const int* nStateVar,
+    const int* nProps, const int* nTemp, const int* nPred,
+    const int* numDefTfv,
+    const int* jSlvUid,          /* (nSlvNod) user node numbers */
+    const int* jMstUid,          /* (nMstNod) */
+    const int* jConMstid,        /* (nFacNod, nSlvNod) */
+    const mj_real* timStep, const mj_real* timGlb, const mj_real* dTimCur,
+    const char* surfInt,         /* CHARACTER*80 */
+    const char* surfSlv,         /* CHARACTER*80 */
+    const char* surfMst,         /* CHARACTER*80 */
+    const mj_real* rdisp,        /* (nDir, nSlvNod) rdisp(1) > 0: penetration */
+    const mj_real* drdisp,       /* (nDir, nSlvNod) increment of relative displacement */
+    const mj_real* drot,         /* (2, 2, nSlvNod) */
+    const mj_real* stiffDflt,    /* (nSlvNod) */
+    const mj_real* condDflt,     /* (nSlvNod) */
+    const mj_real* shape,        /* (nFacNod, nSlvNod) */
+    const mj_real* coordSlv,     /* (nDir, nSlvNod) */
+    const mj_real* coordMst,     /* (nDir, nMstNod) */
+    const mj_real* alocaldir,    /* (nDir, nDir, nSlvNod) */
+    const mj_real* props,        /* (nProps) */
+    const mj_real* areaSlv,      /* (nSlvNod) */
+    const mj_real* tempSlv,      /* (nSlvNod) */
+    const mj_real* dtempSlv,     /* (nSlvNod) */
+    const mj_real* preDefSlv,    /* (nPred, nSlvNod) */
+    const mj_real* dpreDefSlv,   /* (nPred, nSlvNod) */
+    const mj_real* tempMst,      /* (numDefTfv) */
+    const mj_real* dtempMst,     /* (numDefTfv) */
+    const mj_real* preDefMst,    /* (nPred, numDefTfv) */
+    const mj_real* dpreDefMst,   /* (nPred, numDefTfv) */
     /* hidden CHARACTER lengths */
     int lenSurfInt, int lenSurfSlv, int lenSurfMst);
 

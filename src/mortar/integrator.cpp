@@ -50,7 +50,7 @@ namespace {
 
 constexpr int kMaxSegments = 32;
 constexpr int kMaxRelaxSteps = 20000;
-constexpr int kMaxCrossingCuts = 8;
+constexpr int kMaxCrossingCuts = 40;
 constexpr double kTiny = 1e-300;
 
 // Increments of everything the rate statement integrates, over one stage.
@@ -61,6 +61,23 @@ struct Rates {
 };
 
 Vec3 crack_ratio(const Model& M) { return Vec3(M.p.bn, M.p.bs, M.p.bs); }
+
+// Whether the open-regime growing branch keeps the secant damage from
+// decreasing for a plastic increment dp: d (dd - dp) <= b dp along the
+// elastic separation (derivation in docs/model.md).
+bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const double e = y.elastic_separation()[0];
+  if (!(e > 0)) return true;
+  return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
+}
+bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const Vec3 e = y.elastic_separation();
+  const double es = std::hypot(e[1], e[2]);
+  if (!(es > 0)) return true;
+  const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
+  const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
+  return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
+}
 
 // The working point: state + the traction that goes with it.
 struct Point {
@@ -91,26 +108,55 @@ Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
   return r;
 }
 
-// One stage of the rate statement (Eq. 16-18; MODEL.md section 6):
-//   dsigma = kbar (dd - (I + h b) m dl), dl from the consistency condition.
-Rates stage(const Model& M, const Point& P, const Vec3& dd) {
-  const Surface S = surface_of(M, P.y);
-  const Vec3 k = rate_stiffness(M, P.y);
-  const Flow f = flow_of(M, P.sigma, S, P.y.open, k);
-  const double num = f.dF.dot(k.cwiseProduct(dd));
+// No strain-driven solution: the consistency denominator is not positive
+// although the flow changes the traction (softening outruns the elastic
+// relaxation: a snap-back of the material point).
+bool snaps_back(const Flow& f) {
+  const double scale = f.dF.dot(f.k_A_m);
+  return scale > 0 && f.denominator <= 1e-12 * scale;
+}
+
+// Rates of one stage on given branches of the open regime (rate_stiffness).
+Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3& dd, bool grow_n,
+                   bool grow_s, Vec3* dp = nullptr) {
+  const RateStiffness k = rate_stiffness(M, P.y, grow_n, grow_s);
+  const Flow f = flow_of(M, P.sigma, S, k.on_flow);
+  const double num = f.dF.dot(k.on_separation.cwiseProduct(dd));
   Rates r;
-  if (num <= 0) {  // unloading inside the step: secant elasticity
+  // Unloading inside the step, or a flow that no stiffness can feed (open
+  // and fully damaged along it): secant elasticity.
+  if (num <= 0 || !(f.dF.dot(f.k_A_m) > 0)) {
     r.dsigma = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
+    if (dp) *dp = Vec3::Zero();
     return r;
   }
-  const double scale = f.dF.dot(f.k_A_m);
-  if (!(f.denominator > 1e-12 * std::max(scale, kTiny))) {
+  if (snaps_back(f)) {
     r.snapback = true;
     return r;
   }
   r = along_flow(M, P.sigma, f, num / f.denominator);
-  r.dsigma += k.cwiseProduct(dd);
+  r.dsigma += k.on_separation.cwiseProduct(dd);
+  if (dp) *dp = r.dplastic;
   return r;
+}
+
+// One stage of the rate statement (Eq. 16-18; MODEL.md section 6), with dl
+// from the consistency condition. In the open regime each component is on
+// the damage-growing branch unless the damage it implies would decrease
+// (d (dd - dp) > dcr along the component); such a component follows its
+// frozen secant instead. Where the frozen branch has no strain-driven
+// solution, the growing branch stands (settle keeps the damage from
+// decreasing).
+Rates stage(const Model& M, const Point& P, const Vec3& dd) {
+  const Surface S = surface_of(M, P.y);
+  Vec3 dp;
+  const Rates grow = branch_rates(M, P, S, dd, true, true, &dp);
+  if (!P.y.open || grow.snapback) return grow;
+  const bool keep_n = damage_grows_normal(M, P.y, dd, dp);
+  const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
+  if (keep_n && keep_s) return grow;
+  const Rates frozen = branch_rates(M, P, S, dd, keep_n, keep_s);
+  return frozen.snapback ? grow : frozen;
 }
 
 // An open joint with no strength left (s = 0) can only carry zero traction:
@@ -151,7 +197,7 @@ void settle(const Model& M, Point& P, const Vec3& e_start) {
 // Rates of the return at fixed separation, per unit plastic multiplier.
 Rates relaxation_rates(const Model& M, const Point& P, double dl) {
   const Surface S = surface_of(M, P.y);
-  return along_flow(M, P.sigma, flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y)), dl);
+  return along_flow(M, P.sigma, flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow), dl);
 }
 
 // Heun step of the return at fixed separation over dl.
@@ -173,18 +219,21 @@ double yield_of(const Model& M, const Point& P) { return yield_function(P.sigma,
 // (Heun in lambda) with steps that change the traction and the strength by at
 // most 5 %, capped by the Newton estimate F / denominator, and stop at the
 // first crossing of F = 0, located by Pegasus inside the last step, so the
-// return never overshoots the surface or passes the apex. With force_first it
-// takes a step even from F <= 0 (snap-back: the surface shrinks faster than
-// the traction relaxes, so F first grows).
-bool relax(const Model& M, Point& P, IntegrationStatus& st, bool force_first) {
+// return never overshoots the surface or passes the apex. For a snap-back
+// (the surface shrinks faster than the traction relaxes: consistency
+// denominator <= 0, so F grows along the flow) it marches on until the point
+// is back on the surface where the denominator is positive again: the drop
+// at fixed separation that a material point under displacement control makes.
+bool relax(const Model& M, Point& P, IntegrationStatus& st, bool snapback) {
   ++st.relaxations;
   st.plastic = true;
   for (int step = 0; step < kMaxRelaxSteps; ++step) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
     const double tol = yield_tolerance(M, P.sigma);
-    if (F <= tol && !(force_first && step == 0)) return true;
-    const Flow f = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y));
+    const Flow f = flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow);
+    const bool unstable = snaps_back(f);
+    if (F <= tol && !(snapback && unstable)) return true;
     const double scale = std::max(P.sigma.norm(), 1e-3 * M.stress_scale);
     double dl = 0.05 * scale / std::max(f.k_A_m.norm(), kTiny);
     const double ds_rate = std::abs(f.gI / M.p.GIC + f.gII / M.p.GIIC);
@@ -214,20 +263,23 @@ bool relax(const Model& M, Point& P, IntegrationStatus& st, bool force_first) {
 
 // Drift correction after an accepted substep (Sloan et al. 2001): the
 // consistent correction along the flow direction, with the hardening it
-// implies; where that does not reduce |F|, a projection normal to the
-// surface, realised as a plastic displacement so that Eq. 1 still holds.
+// implies; where that does not reduce F, a projection normal to the surface,
+// realised as a plastic displacement so that Eq. 1 still holds. Only a state
+// outside the surface is corrected: one that ends inside (F < 0) is
+// admissible, and pulling it out would need a negative plastic multiplier,
+// i.e. works and damage that decrease.
 void correct_drift(const Model& M, Point& P) {
   for (int it = 0; it < 8; ++it) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
-    if (std::abs(F) <= yield_tolerance(M, P.sigma)) return;
-    const Flow f = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y));
+    if (F <= yield_tolerance(M, P.sigma)) return;
+    const Flow f = flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow);
     const Vec3 e0 = P.y.elastic_separation();
     if (f.denominator > 0) {
       Point C = P;
       add(C, along_flow(M, P.sigma, f, F / f.denominator), 1.0);
       settle(M, C, e0);
-      if (std::abs(yield_of(M, C)) < std::abs(F)) {
+      if (std::abs(yield_of(M, C)) < F) {
         P = C;
         continue;
       }
@@ -243,12 +295,25 @@ void correct_drift(const Model& M, Point& P) {
     C.y.dissipation_plastic += P.sigma.dot(dp);
     C.sigma -= (F / nn) * f.dF;
     settle(M, C, e0);
-    if (!(std::abs(yield_of(M, C)) < std::abs(F))) return;
+    if (!(std::abs(yield_of(M, C)) < F)) return;
     P = C;
   }
 }
 
 bool crosses(bool open, double e_n) { return open ? e_n < 0 : e_n > 0; }
+
+// Bracket on the substep size around a regime boundary: e_lo, e_hi are the
+// elastic normal separations at the ends of substeps of size lo and hi.
+struct Bracket {
+  bool active = false;
+  double lo = 0, e_lo = 0, hi = 0, e_hi = 0;
+  double next(int iteration) const {
+    double x = lo + (hi - lo) * e_lo / (e_lo - e_hi);
+    // Every third try, or when the secant leaves the bracket: bisection.
+    if (!(x > lo && x < hi) || iteration % 3 == 2) x = 0.5 * (lo + hi);
+    return x;
+  }
+};
 
 struct Stepper {
   const Model& M;
@@ -267,8 +332,11 @@ struct Stepper {
     double T = 0, dT = 1;
     bool last_rejected = false;
     int cuts = 0;
-    while (T < 1) {
-      if (substeps() >= c.max_substeps) {
+    Bracket cut;
+    // Every pass of the loop counts against the budget, so no path through
+    // it (cuts, relaxations) can spin forever.
+    for (int pass = 0; T < 1; ++pass) {
+      if (substeps() >= c.max_substeps || pass >= 4 * c.max_substeps) {
         st.failure = Failure::too_many_substeps;
         return T;
       }
@@ -286,20 +354,20 @@ struct Stepper {
       double err = 0;
       if (heun) {
         const Rates r2 = stage(M, A, dd);
-        if (r2.snapback) {  // the stage entered the snap-back region: shorter step
-          if (dT > c.min_substep) {
-            dT = std::max(0.5 * dT, c.min_substep);
-            ++st.substeps_rejected;
-            continue;
-          }
-          if (!relax(M, P, st, true)) { st.failure = Failure::relaxation_failed; return T; }
+        if (r2.snapback && dT > c.min_substep) {  // the stage entered the snap-back region
+          dT = std::max(0.5 * dT, c.min_substep);
+          ++st.substeps_rejected;
           continue;
         }
-        N = P;
-        add(N, r1, 0.5);
-        add(N, r2, 0.5);
-        N.y.separation += dd;
-        err = local_error(r1, r2, N);
+        if (r2.snapback) {  // at the smallest substep: the first stage alone (forward Euler)
+          st.min_substep_hit = true;
+        } else {
+          N = P;
+          add(N, r1, 0.5);
+          add(N, r2, 0.5);
+          N.y.separation += dd;
+          err = local_error(r1, r2, N);
+        }
         if (err > c.stol && dT > c.min_substep) {
           dT = std::max(std::max(0.9 * std::sqrt(c.stol / err), 0.1) * dT, c.min_substep);
           last_rejected = true;
@@ -308,25 +376,39 @@ struct Stepper {
         }
         if (err > c.stol) st.min_substep_hit = true;
       }
-      // A switch of regime inside the substep: cut the substep to end at the
-      // boundary (linear estimate of where delta_e_n = 0), then switch there.
+      // A switch of regime inside the substep: shorten the substep to end on
+      // the boundary delta_e_n = 0 (regula falsi on the substep size, with
+      // bisection as a safeguard, bracketed between a size that stays in the
+      // regime and one that crosses), then switch there.
       const double e0 = P.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
+      const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(N.y);
+      const bool crossed = crosses(P.y.open, e1);
       bool switch_here = false;
-      if (crosses(P.y.open, e1)) {
-        const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(N.y);
-        if (std::abs(e1) > near && cuts < kMaxCrossingCuts && e0 != e1) {
-          dT *= std::clamp(e0 / (e0 - e1), 1e-6, 1.0);
+      if (crossed && std::abs(e0) <= boundary_eps(P.y)) {  // already on it, moving across
+        at_boundary = true;
+        return T;
+      }
+      if (crossed || cut.active) {
+        if (!cut.active) cut = Bracket{true, 0.0, e0, dT, e1};
+        else if (crossed) { cut.hi = dT; cut.e_hi = e1; }
+        else { cut.lo = dT; cut.e_lo = e1; }
+        if (std::abs(e1) > near && cuts < kMaxCrossingCuts) {
+          dT = cut.next(cuts);
           ++cuts;
           continue;
         }
-        switch_here = true;
+        switch_here = crossed || std::abs(e1) <= near;
       }
       cuts = 0;
+      cut = Bracket{};
       const Vec3 e_start = P.y.elastic_separation();
       P = N;
       if (switch_here) P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
       settle(M, P, e_start);
-      if (heun) correct_drift(M, P);
+      // Not at a switch: the drift correction's plastic displacement would
+      // move the point off the boundary again; the switch re-derives the
+      // traction in the new regime and returns it to the surface if needed.
+      if (heun && !switch_here) correct_drift(M, P);
       ++st.substeps_accepted;
       T += dT;
       if (switch_here) {
@@ -374,7 +456,7 @@ struct Stepper {
     auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
     auto tol_at = [&](double a) { return yield_tolerance(M, K.cwiseProduct(e0 + a * rest)); };
     const double F0 = yield_function(P.sigma, S), tol0 = tol_at(0);
-    const Vec3 n = flow_of(M, P.sigma, S, P.y.open, rate_stiffness(M, P.y)).dF;
+    const Vec3 n = flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow).dF;
     const Vec3 dsig = K.cwiseProduct(rest);
     const bool on_surface = std::abs(F0) <= tol0;
     const bool loading = n.dot(dsig) > 0;

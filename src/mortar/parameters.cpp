@@ -66,6 +66,10 @@ const char* scheme_name(Scheme s) {
 std::string ValidationError::message() const {
   if (ok()) return "valid";
   char buf[320];
+  if (argument) {
+    std::snprintf(buf, sizeof buf, "argument '%s' = %.9g violates the rule: %s", name, value, rule);
+    return buf;
+  }
   std::snprintf(buf, sizeof buf, "'%s' (props(%d)) = %.9g violates the rule: %s", name,
                 index + 1, value, rule);
   return buf;
@@ -112,8 +116,11 @@ ValidationError validate(const Controls& c) {
 }
 
 ValidationError read_props(const double* props, int n_props, Parameters& p, Controls& c) {
-  if (n_props < kParameterCount)
-    return fail(n_props, "nProps", n_props, "nProps >= 14 (the 14 parameters of Table 1)");
+  if (n_props < kParameterCount || props == nullptr) {
+    ValidationError e = fail(0, "nProps", n_props, "nProps >= 14 (the 14 parameters of Table 1)");
+    e.argument = true;
+    return e;
+  }
   for (int i = 0; i < kParameterCount; ++i) parameter_at(p, i) = props[i];
   ValidationError e = validate(p);
   if (!e.ok()) return e;

@@ -54,7 +54,7 @@ struct Controls {
   Scheme scheme = Scheme::modified_euler;
   double stol = 1e-5;        // relative local error tolerance of a substep
   double ftol = 1e-8;        // yield-surface tolerance, relative to max(|sigma|, ft0)
-  double min_substep = 1e-6; // smallest substep, as a fraction of the increment
+  double min_substep = 1e-4; // smallest substep, as a fraction of the increment
   int max_substeps = 100000; // accepted + rejected substeps allowed per increment
 };
 
@@ -64,6 +64,7 @@ struct ValidationError {
   const char* name = "";     // parameter or control name
   double value = 0;          // offending value
   const char* rule = "";     // the rule it breaks
+  bool argument = false;     // an argument (nProps) rather than a props entry
   bool ok() const { return index < 0; }
   std::string message() const;  // "parameter 'c0' (props(4)) = 0.1 violates ..."
 };

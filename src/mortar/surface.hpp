@@ -68,11 +68,9 @@ struct Flow {
 // tau = 0: the apex of the fully softened cone, where any subgradient with a
 // zero shear part is admissible).
 //
-// k_rate is the stiffness of the rate statement: kbar, with a component set to
-// zero where that component's damage is complete in the open regime (d = 1:
-// the open crack carries no traction in that direction, so its traction rate
-// is zero too; see rate_stiffness).
-inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool open, const Vec3& k_rate) {
+// k_flow is the stiffness that multiplies the flow in the rate statement:
+// the traction changes by -k_flow . m per unit lambda (see RateStiffness).
+inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow) {
   const Parameters& p = M.p;
   Flow f;
   const double tau = shear_norm(sigma);
@@ -91,9 +89,7 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool op
 
   f.dF = Vec3(S.tan_phi, e1, e2);
   f.m = Vec3(m_n, e1, e2);
-  const double h = open ? 1.0 : 0.0;
-  f.k_A_m = Vec3(k_rate[0] * (1 + h * p.bn) * m_n, k_rate[1] * (1 + h * p.bs) * e1,
-                 k_rate[2] * (1 + h * p.bs) * e2);
+  f.k_A_m = k_flow.cwiseProduct(f.m);
 
   // Works per unit lambda (Eqs. 7-9); the inelastic increment includes the
   // crack part in every regime (Eq. 17).
@@ -115,12 +111,32 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, bool op
   return f;
 }
 
-// Stiffness of the rate statement (MODEL.md section 6): kbar; in the open
-// regime a component whose damage is complete keeps zero traction, so its
-// rate stiffness is zero as well.
-inline Vec3 rate_stiffness(const Model& M, const State& y) {
-  const bool cut_n = y.open && y.dn >= 1, cut_s = y.open && y.ds >= 1;
-  return Vec3(cut_n ? 0.0 : M.p.kn, cut_s ? 0.0 : M.p.ks, cut_s ? 0.0 : M.p.ks);
+// Stiffnesses of the rate statement (MODEL.md section 6), per component:
+//   closed:                 dsigma = kbar (dd - m dl)
+//   open, damage growing:   dsigma = kbar (dd - (1 + b) m dl)   (the paper's Eq. 16-17)
+//   open, damage frozen:    dsigma = kbar (1 - d) (dd - m dl)   (secant, Eq. 1)
+// The open "growing" branch holds while the secant damage it implies does not
+// decrease; where it would, damage is frozen (it never decreases) and the
+// component follows its secant. A component whose damage is complete carries
+// no traction in the open regime, so both of its stiffnesses are zero.
+struct RateStiffness {
+  Vec3 on_separation;  // multiplies the separation increment
+  Vec3 on_flow;        // multiplies m dl
+};
+inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n = true, bool grow_s = true) {
+  const Parameters& p = M.p;
+  if (!y.open) return {Vec3(p.kn, p.ks, p.ks), Vec3(p.kn, p.ks, p.ks)};
+  auto component = [](double k, double b, double d, bool grow, double& on_sep, double& on_flow) {
+    if (d >= 1) { on_sep = on_flow = 0; return; }
+    on_sep = grow ? k : k * (1 - d);
+    on_flow = grow ? k * (1 + b) : k * (1 - d);
+  };
+  RateStiffness r;
+  component(p.kn, p.bn, y.dn, grow_n, r.on_separation[0], r.on_flow[0]);
+  component(p.ks, p.bs, y.ds, grow_s, r.on_separation[1], r.on_flow[1]);
+  r.on_separation[2] = r.on_separation[1];
+  r.on_flow[2] = r.on_flow[1];
+  return r;
 }
 
 // Elastic stiffness of Eq. 21 with the unilateral factor h of the regime.

@@ -82,6 +82,12 @@ TEST_CASE("Parameters: optional controls from props 15-19, zero keeps the defaul
   props[17] = 2.5;  // not a whole number
   CHECK(read_props(props, 19, p, c).index == 17);
   CHECK(read_props(props, 13, p, c).message().find("nProps >= 14") != std::string::npos);
+  for (int bad : {-5, 0, 13}) {
+    const ValidationError e = read_props(props, bad, p, c);
+    CHECK_FALSE(e.ok());
+    CHECK(e.argument);
+    CHECK(e.message().find("argument 'nProps'") != std::string::npos);
+  }
 }
 
 TEST_CASE("Parameters: alpha and beta at s = 1 satisfy Eq. 3", "[parameters]") {

@@ -21,7 +21,7 @@ TEST_CASE("Surface: dF/dsigma matches central differences", "[surface]") {
   for (int k = 0; k < 200; ++k) {
     const Surface S = surface_of(M, 0.3 * M.p.GIC * w(rng), 0.3 * M.p.GIIC * w(rng), 1e-4 * w(rng));
     const Vec3 sigma(u(rng), u(rng), u(rng));
-    const Vec3 dF = flow_of(M, sigma, S, false, kbar_of(M)).dF;
+    const Vec3 dF = flow_of(M, sigma, S, kbar_of(M)).dF;
     for (int i = 0; i < 3; ++i) {
       const double h = 1e-6;
       Vec3 a = sigma, b = sigma;
@@ -43,9 +43,8 @@ TEST_CASE("Surface: the hardening term is dF/dkappa along the flow", "[surface]"
     for (int k = 0; k < 100; ++k) {
       const double wI = 0.4 * p.GIC * w(rng), wII = 0.4 * p.GIIC * w(rng), wIII = 2e-3 * w(rng);
       const Vec3 sigma(p.ft0 * u(rng), p.c0 * u(rng), p.c0 * u(rng));
-      const bool open = sigma[0] > 0;
       const Surface S = surface_of(M, wI, wII, wIII);
-      const Flow f = flow_of(M, sigma, S, open, kbar_of(M));
+      const Flow f = flow_of(M, sigma, S, kbar_of(M));
       const double h = 1e-7;
       auto F_at = [&](double l) {
         return yield_function(sigma, surface_of(M, wI + l * f.gI, wII + l * f.gII, wIII + l * f.gIII));
@@ -80,20 +79,20 @@ TEST_CASE("Surface: flow direction blends from tan(psi) to tan(phi) across the o
   const Surface S = surface_of(M, 0, 0, 0);
   const Vec3 k = kbar_of(M);
   // Closed: the paper's potential, Eq. 10 (regularised with alpha).
-  CHECK(flow_of(M, Vec3(-1, 0.3, 0), S, false, k).m[0] == Approx(S.tan_psi));
+  CHECK(flow_of(M, Vec3(-1, 0.3, 0), S, k).m[0] == Approx(S.tan_psi));
   // Continuous at sigma_n = 0 from both sides.
-  CHECK(flow_of(M, Vec3(1e-12, 0.3, 0), S, true, k).m[0] == Approx(S.tan_psi).epsilon(1e-9));
+  CHECK(flow_of(M, Vec3(1e-12, 0.3, 0), S, k).m[0] == Approx(S.tan_psi).epsilon(1e-9));
   // Associated at the tension cut-off (pure tension softens even with psi = 0).
-  CHECK(flow_of(M, Vec3(M.p.ft0, 0, 0), S, true, k).m[0] == Approx(S.tan_phi));
-  CHECK(flow_of(M, Vec3(0.5 * M.p.ft0, 0, 0), S, true, k).m[0] ==
+  CHECK(flow_of(M, Vec3(M.p.ft0, 0, 0), S, k).m[0] == Approx(S.tan_phi));
+  CHECK(flow_of(M, Vec3(0.5 * M.p.ft0, 0, 0), S, k).m[0] ==
         Approx(S.tan_psi + 0.5 * (S.tan_phi - S.tan_psi)));
   // Shear part is the gradient of the regularised G: tau / sqrt(alpha^2 + tau^2).
-  const Flow f = flow_of(M, Vec3(-1, 0.3, 0.4), S, false, k);
+  const Flow f = flow_of(M, Vec3(-1, 0.3, 0.4), S, k);
   CHECK(f.m[1] == Approx(0.3 / std::hypot(S.alpha, 0.5)));
   CHECK(f.m[2] == Approx(0.4 / std::hypot(S.alpha, 0.5)));
   // At the apex of the fully softened cone the shear part is zero, not NaN.
   const Surface R = surface_of(M, 10 * M.p.GIC, 0, 0);
-  const Flow a = flow_of(M, Vec3(0, 0, 0), R, true, k);
+  const Flow a = flow_of(M, Vec3(0, 0, 0), R, k);
   CHECK(a.m.allFinite());
   CHECK(a.m[1] == 0);
 }
