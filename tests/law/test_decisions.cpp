@@ -1,0 +1,182 @@
+// Decisions of docs/model.md that the invariant tests do not pin on their
+// own: regime switches inside an increment, the closure jump, snap-back,
+// disintegration, the regularised potential, the block function.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <vector>
+
+#include "mortar/surface.hpp"
+#include "paper_sets.hpp"
+#include "paths.hpp"
+
+using namespace mortar;
+using namespace mortar::testing;
+
+namespace {
+Vec3 kbar_of(const Model& M) { return Vec3(M.p.kn, M.p.ks, M.p.ks); }
+
+double plastic_potential(const Vec3& sigma, const Surface& S) {
+  return std::hypot(S.alpha, shear_norm(sigma)) + sigma[0] * S.tan_psi;
+}
+
+// A damaged, open joint: opened and slid in small increments.
+State damaged_open_joint(const Model& M) {
+  DisplacementDriver d(M);
+  d.ramp(Vec3(0.003, 0.002, 0), 300);
+  d.ramp(Vec3(0.0, 0.01, 0), 300);
+  REQUIRE(d.state().open);
+  REQUIRE(d.state().ds > 0.3);
+  return d.state();
+}
+}  // namespace
+
+TEST_CASE("Decision: the flow direction is dG/dsigma of the regularised potential under compression",
+          "[decision][surface]") {
+  const Model M = make_model_checked(van_der_pluijm(-0.5));
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const Surface S = surface_of(M, 1e-3 * std::abs(u(rng)), 1e-2 * std::abs(u(rng)), 1e-4 * std::abs(u(rng)));
+    const Vec3 sigma(-std::abs(u(rng)), u(rng), u(rng));
+    const Vec3 m = flow_of(M, sigma, S, kbar_of(M)).m;
+    for (int i = 0; i < 3; ++i) {
+      Vec3 a = sigma, b = sigma;
+      a[i] += 1e-6;
+      b[i] -= 1e-6;
+      CHECK(m[i] == Approx((plastic_potential(a, S) - plastic_potential(b, S)) / 2e-6).margin(1e-7));
+    }
+  }
+}
+
+TEST_CASE("Decision: a regime switch inside an increment is resolved where it happens", "[decision][regime]") {
+  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
+  const Model M = model_with(almeida_m15(), scheme);
+  // Damaged by pure opening, so that closing with a small slip stays elastic.
+  DisplacementDriver drive(M);
+  drive.ramp(Vec3(0.004, 0, 0), 400);
+  const State start = drive.state();
+  REQUIRE(start.open);
+  REQUIRE(start.dn > 0.5);
+  const double e = start.elastic_separation()[0];
+  // One increment that closes the joint and compresses it, against the same
+  // path split exactly at delta_e_n = 0.
+  const Vec3 d(-2 * e, 1e-5, 0);
+  State one = start, two = start;
+  const IncrementResult r1 = integrate_increment(M, one, d);
+  integrate_increment(M, two, 0.5 * d);
+  const IncrementResult r2 = integrate_increment(M, two, 0.5 * d);
+  REQUIRE(r1.status.ok());
+  CHECK(r1.status.regime_switches == 1);
+  CHECK_FALSE(r1.status.plastic);
+  CHECK_FALSE(one.open);
+  for (int i = 0; i < 3; ++i) CHECK(r1.traction[i] == Approx(r2.traction[i]).margin(1e-12));
+  // Closed: the full kn and ks act on the elastic separation (Eq. 13, h = 0).
+  CHECK(r1.traction[0] == Approx(-M.p.kn * e).epsilon(1e-12));
+  CHECK(r1.traction[1] == Approx(M.p.ks * 1e-5).epsilon(1e-9));
+}
+
+TEST_CASE("Decision: the closure jump returns to the surface at fixed separation, without overshoot",
+          "[decision][regime]") {
+  const Model M = model_with(almeida_m15(), Scheme::modified_euler);
+  State s = damaged_open_joint(M);
+  const Vec3 e = s.elastic_separation();
+  // The trial at closure: the shear stiffness jumps from ks(1 - ds) to ks.
+  const double trial = M.p.ks * std::hypot(e[1], e[2]);
+  REQUIRE(trial > 1.5 * shear_norm(traction_of(M, s)));
+  // Close just past delta_e_n = 0 in one increment: the switch and the
+  // return happen at its end. (Landing exactly on 0 keeps the joint open: a
+  // point on the boundary stays in the regime it was in.)
+  const IncrementResult r = integrate_increment(M, s, Vec3(-e[0] - 1e-12, 0, 0));
+  REQUIRE(r.status.ok());
+  CHECK(r.status.regime_switches == 1);
+  CHECK(r.status.relaxations >= 1);
+  CHECK_FALSE(s.open);
+  const double F = yield_function(r.traction, surface_of(M, s));
+  CHECK(std::abs(F) <= 10 * yield_tolerance(M, r.traction));  // on the surface, not beyond it
+  CHECK(shear_norm(r.traction) < trial);
+  CHECK(r.traction[1] * e[1] > 0);  // no overshoot past tau = 0
+  CHECK(s.energy_unilateral < 0);   // the closing crack got its stiffness back
+}
+
+TEST_CASE("Decision: a snap-back drops at fixed separation to a stable point on the surface",
+          "[decision][snapback]") {
+  // ft0^2 / GIC = 1.0 / 0.0005 = 2000 > kn = 500: no strain-driven softening.
+  Parameters p = almeida_m15();
+  p.kn = 500;
+  p.ft0 = 1.0;
+  p.c0 = 2.0;
+  p.GIC = 0.0005;
+  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
+  const Model M = model_with(p, scheme);
+  DisplacementDriver d(M);
+  // 1e-7 mm increments: the drop happens inside one increment, so the
+  // trapezoidal external work is accurate to about 1e-4.
+  d.ramp(Vec3(0.004, 0, 0), 40000);
+  REQUIRE(d.curve().all_ok);
+  bool dropped = false;
+  for (size_t i = 1; i < d.curve().samples.size(); ++i) {
+    const Sample& a = d.curve().samples[i - 1];
+    const Sample& b = d.curve().samples[i];
+    if (b.result.status.relaxations > 0) dropped = true;
+    CHECK(b.traction.allFinite());
+    CHECK(b.traction[0] <= p.ft0 * (1 + 1e-9));
+    CHECK(b.state.dn >= a.state.dn);
+  }
+  CHECK(dropped);
+  // The work done is all dissipated or stored.
+  const double W = d.curve().external_work();
+  CHECK(d.curve().stored_plus_dissipated(M) == Approx(W).epsilon(1e-3));
+  // The drop ends where softening is stable again: kn = ft0 sigma_n / GIC.
+  CHECK(d.curve().samples.back().traction[0] < p.kn * p.GIC / p.ft0);
+}
+
+TEST_CASE("Decision: an open joint with no strength left disintegrates", "[decision][disintegration]") {
+  const Model M = model_with(almeida_m34(), Scheme::modified_euler);
+  State s;
+  s.wI = 2 * M.p.GIC;  // s = 0
+  s.separation = Vec3(1e-3, 0, 0);
+  IncrementResult r = integrate_increment(M, s, Vec3(1e-4, 0, 0));
+  REQUIRE(r.status.ok());
+  CHECK(s.open);
+  CHECK(s.dn == 1);
+  CHECK(s.ds == 1);
+  CHECK(r.traction.norm() == 0);
+  CHECK(s.dissipation_damage > 0);  // the elastic energy it had is dissipated, not lost
+  // Sliding while open: still nothing.
+  State sliding = s;
+  CHECK(integrate_increment(M, sliding, Vec3(0, 5e-3, 0)).traction.norm() == 0);
+  // Pressed shut it has the full kn and is a pure friction joint: tan(phir)
+  // once worn (Eq. 6), at most tan(phi0) before.
+  r = integrate_increment(M, s, Vec3(-s.elastic_separation()[0] - 1e-4, 0, 0));
+  CHECK(r.traction[0] == Approx(-M.p.kn * 1e-4).epsilon(1e-9));
+  for (int i = 0; i < 200; ++i) r = integrate_increment(M, s, Vec3(0, 1e-4, 0));
+  REQUIRE(r.status.ok());
+  CHECK(shear_norm(r.traction) <= M.tan_phi0 * std::abs(r.traction[0]) * (1 + 1e-6));
+  CHECK(shear_norm(r.traction) >= M.tan_phir * std::abs(r.traction[0]) * (1 - 1e-6));
+}
+
+TEST_CASE("Decision: the block function gives the point-by-point results in the solver layout",
+          "[decision][block]") {
+  const Model M = model_with(van_der_pluijm(-0.5), Scheme::modified_euler);
+  const int n = 7, n_dir = 3, n_states = kStateCount;
+  std::vector<double> state(n * n_states, 0.0), traction(n * n_dir), dsep(n * n_dir), energy(n);
+  std::vector<State> points(n);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> u(-2e-3, 2e-3);
+  for (int step = 0; step < 50; ++step) {
+    for (double& x : dsep) x = u(rng);
+    const int failures = integrate_block(M, n, n_dir, n_states, dsep.data(), state.data(), traction.data(),
+                                         BlockOutputs{energy.data(), nullptr});
+    CHECK(failures == 0);
+    for (int k = 0; k < n; ++k) {
+      const IncrementResult r =
+          integrate_increment(M, points[k], Vec3(dsep[k * 3], dsep[k * 3 + 1], dsep[k * 3 + 2]));
+      for (int i = 0; i < n_dir; ++i) CHECK(traction[k * n_dir + i] == r.traction[i]);
+      CHECK(energy[k] == r.elastic_energy);
+      std::vector<double> flat(n_states);
+      store_state(points[k], flat.data());
+      for (int j = 0; j < n_states; ++j) CHECK(state[k * n_states + j] == flat[j]);
+    }
+  }
+}
