@@ -51,37 +51,63 @@ const char* check_state(const State& s);
 // NaN or infinite.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation);
 
-// Block of points in the solver layout: separation increments (n_dir x
-// n_points, column-major, law signs), state (n_states x n_points), traction
-// out (n_dir x n_points). n_dir is 2 (one slip) or 3. Per-point energies are
-// optional (nullptr to skip). Returns the number of points that failed; each
-// failed point keeps its start state and carries its Failure in slot 21.
-struct BlockOutputs {
-  double* elastic_energy = nullptr;      // n_points
-  double* d_dissipation = nullptr;       // n_points: plastic + damage + unilateral
-};
-
-template <class Real>
-int integrate_block(const Model& model, int n_points, int n_dir, int n_states,
-                    const Real* d_separation, Real* state, Real* traction,
-                    BlockOutputs out = {}) {
+// Runs integrate_increment over a block of points whose states lie in the
+// solver's flat array: point k's state starts at state + k * state_stride.
+// The caller's point_io supplies what differs between solvers:
+//   bool increment(int k, const Real* flat_state, const State& s, Vec3& d)
+//        the separation increment of point k (law signs); false skips the point;
+//   void finish(int k, Real* flat_state, const State& s, const IncrementResult& r)
+//        writes point k's outputs (after its state has been stored back).
+// On failure a point keeps its start state with its Failure in slot 21.
+// Returns the number of points that failed. No allocation.
+template <class Real, class PointIO>
+int integrate_block(const Model& model, int n_points, long state_stride, Real* state, PointIO& point_io) {
   int failures = 0;
   for (int k = 0; k < n_points; ++k) {
+    Real* flat = state + k * state_stride;
     State s;
-    Real* sk = state + static_cast<long>(k) * n_states;
-    load_state(sk, s);
-    const Real* dsk = d_separation + static_cast<long>(k) * n_dir;
-    const Vec3 d(static_cast<double>(dsk[0]), static_cast<double>(dsk[1]), n_dir > 2 ? static_cast<double>(dsk[2]) : 0.0);
-    IncrementResult r = integrate_increment(model, s, d);
-    store_state(s, sk);
-    Real* tk = traction + static_cast<long>(k) * n_dir;
-    for (int i = 0; i < n_dir; ++i) tk[i] = Real(r.traction[i]);
-    if (out.elastic_energy) out.elastic_energy[k] = r.elastic_energy;
-    if (out.d_dissipation)
-      out.d_dissipation[k] = r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral;
+    load_state(flat, s);
+    Vec3 d;
+    if (!point_io.increment(k, static_cast<const Real*>(flat), s, d)) continue;
+    const IncrementResult r = integrate_increment(model, s, d);
+    store_state(s, flat);
+    point_io.finish(k, flat, s, r);
     if (!r.status.ok()) ++failures;
   }
   return failures;
+}
+
+// Per-point energies a plain block may also return (nullptr to skip).
+struct BlockOutputs {
+  double* elastic_energy = nullptr;  // n_points
+  double* d_dissipation = nullptr;   // n_points: plastic + damage + unilateral
+};
+
+// The same over plain arrays in the solver layout: separation increments
+// (n_dir x n_points, column-major, law signs), state (n_states x n_points),
+// traction out (n_dir x n_points). n_dir is 2 (one slip) or 3.
+template <class Real>
+int integrate_block(const Model& model, int n_points, int n_dir, int n_states, const Real* d_separation,
+                    Real* state, Real* traction, BlockOutputs out = {}) {
+  struct PlainArrays {
+    int n_dir;
+    const Real* d_separation;
+    Real* traction;
+    BlockOutputs out;
+    bool increment(int k, const Real*, const State&, Vec3& d) const {
+      const Real* dk = d_separation + static_cast<long>(k) * n_dir;
+      d = Vec3(double(dk[0]), double(dk[1]), n_dir > 2 ? double(dk[2]) : 0.0);
+      return true;
+    }
+    void finish(int k, Real*, const State&, const IncrementResult& r) const {
+      Real* tk = traction + static_cast<long>(k) * n_dir;
+      for (int i = 0; i < n_dir; ++i) tk[i] = Real(r.traction[i]);
+      if (out.elastic_energy) out.elastic_energy[k] = r.elastic_energy;
+      if (out.d_dissipation)
+        out.d_dissipation[k] = r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral;
+    }
+  } io{n_dir, d_separation, traction, out};
+  return integrate_block(model, n_points, static_cast<long>(n_states), state, io);
 }
 
 }  // namespace mortar
