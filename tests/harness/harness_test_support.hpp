@@ -1,0 +1,44 @@
+// Helpers shared by the harness tests: input files, temporary folders, runs
+// recorded per point.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "parameter_file.hpp"
+#include "protocol.hpp"
+#include "runner.hpp"
+
+namespace mortar::harness::testing {
+
+inline std::string data_file(const std::string& name) { return std::string(MJ_TEST_DATA_DIR) + "/" + name; }
+
+// A fresh, empty folder under the system's temporary directory.
+inline std::filesystem::path fresh_directory(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("mj_harness_test_" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline std::string write_file(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+  return path.string();
+}
+
+// The samples of every point, indexed [point][increment].
+inline std::vector<std::vector<Sample>> run_all_points(const Parameters& p, const Protocol& protocol,
+                                                       const RunSettings& settings) {
+  std::vector<std::vector<Sample>> curves(static_cast<size_t>(settings.points));
+  run_protocol(p, protocol, settings, [&](int point, const Sample& s) { curves[point].push_back(s); });
+  return curves;
+}
+
+inline std::vector<Sample> run_one_point(const Parameters& p, const Protocol& protocol, RunSettings settings) {
+  settings.points = 1;
+  return run_all_points(p, protocol, settings).front();
+}
+
+}  // namespace mortar::harness::testing
