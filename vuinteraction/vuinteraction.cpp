@@ -38,6 +38,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "adapter_common.hpp"
 #include "mortar/integrator.hpp"
 
 #ifndef MJ_STANDALONE
@@ -51,44 +52,11 @@ namespace {
 using Real = mj_real;
 using mortar::Vec3;
 namespace slot = mortar::slot;
-
-// Codes written to SDV 21 (status) for argument and property errors. Negative,
-// so that they cannot be mistaken for the law's Failure codes (positive).
-enum AdapterCode : int {
-  kBadDirections = -1,  // nDir not 2 or 3
-  kBadStateCount = -2,  // nStates / nStateVar below the layout's 23
-  kBadPropCount = -3,   // nProps below 14
-  kBadProperty = -4,    // a property or control breaks its rule
-  kBadNodeStates = -5,  // nNodState < 1
-  kInternalError = -9,  // an exception escaped the law (never expected)
-};
-
-// props(15..19) are the law's integration controls (mortar::read_props);
-// props(20) is the adapter's shear sign; anything after it is ignored.
-constexpr int kLawPropCount = 19;
-constexpr int kShearSignIndex = 19;  // 0-based: props(20)
-constexpr int kReadPropCount = 20;
-
-// Penetrations at or below this mean "no opposite surface found" (the manual
-// gives -1e36 for unpaired points in UINTER; VUINTER is assumed to do the same).
-constexpr double kUnpairedPenetration = -1e30;
+// Shared with the Abaqus/Standard adapter (uinter.cpp): adapter_common.hpp.
+using namespace mj_adapter;
 
 // Point-failure messages printed per call before a summary line.
 constexpr int kMaxPointMessages = 5;
-
-// Who is calling, for messages.
-struct Caller {
-  const char* routine;  // "VUINTERACTION" or "VUINTER"
-  const char* name;     // surfInt, not NUL-terminated
-  int name_length;      // trailing blanks removed
-};
-
-Caller make_caller(const char* routine, const char* surf_int, int hidden_length) {
-  int n = (hidden_length > 0 && hidden_length <= 80) ? hidden_length : 80;
-  if (!surf_int) return {routine, "?", 1};
-  while (n > 0 && (surf_int[n - 1] == ' ' || surf_int[n - 1] == '\0')) --n;
-  return {routine, surf_int, n};
-}
 
 // One call in the adapter's own terms: points k = 0 .. n_points-1.
 struct Block {
@@ -133,26 +101,15 @@ ArgumentError check_arguments(const Block& b, const char* states_name) {
   return {};
 }
 
-// The law's model and the adapter's own control, read from props.
-struct Setup {
-  mortar::Model model;
-  double shear_sign = -1;  // Abaqus stress(2..nDir) = shear_sign * tau
-};
+// Abaqus/Explicit: props(15) = 0 is modified Euler, props(20) = 0 is -1.
+constexpr Defaults kExplicitDefaults = {mortar::Scheme::modified_euler, -1.0,
+                                        "props(20) is 0 (default, = -1), -1 or +1"};
 
 mortar::ValidationError read_setup(const Block& b, Setup& setup) {
   double p[kReadPropCount] = {};
   const int n = std::min(b.n_props, kReadPropCount);
   for (int i = 0; i < n; ++i) p[i] = double(b.props[i]);
-  mortar::Parameters parameters;
-  mortar::Controls controls;
-  mortar::ValidationError e = mortar::read_props(p, std::min(n, kLawPropCount), parameters, controls);
-  if (!e.ok()) return e;
-  const double sign = n > kShearSignIndex ? p[kShearSignIndex] : 0.0;
-  if (sign != 0 && sign != 1 && sign != -1)
-    return {kShearSignIndex, "shear_sign", sign, "props(20) is 0 (default, = -1), -1 or +1"};
-  setup.shear_sign = sign == 0 ? -1.0 : sign;
-  setup.model = mortar::make_model(parameters, controls);
-  return {};
+  return mj_adapter::read_setup(p, n, kExplicitDefaults, setup);
 }
 
 double finite_or_zero(Real x) { return std::isfinite(double(x)) ? double(x) : 0.0; }
@@ -195,22 +152,9 @@ void stop_analysis() {
   // Standalone: nothing to stop; the caller reads SDV 21.
 }
 
-void report(const Caller& c, const char* what) {
-  char line[640];
-  std::snprintf(line, sizeof line, "%s, interaction '%.*s': %s\n", c.routine, c.name_length, c.name, what);
-  std::fputs(line, stderr);  // one write per message, so threads do not interleave within it
-}
-
 void report_argument(const Caller& c, const ArgumentError& e) {
   char what[400];
   std::snprintf(what, sizeof what, "argument %s = %ld violates the rule: %s", e.argument, e.value, e.rule);
-  report(c, what);
-}
-
-void report_property(const Caller& c, const mortar::ValidationError& e) {
-  char what[480];
-  std::snprintf(what, sizeof what, "property '%s' (props(%d)) = %.9g violates the rule: %s", e.name, e.index + 1,
-                e.value, e.rule);
   report(c, what);
 }
 

@@ -1,4 +1,5 @@
-/* The Abaqus/Explicit user-subroutine interfaces this project implements,
+/* The Abaqus user-subroutine interfaces this project implements (Explicit:
+ * VUINTERACTION, VUINTER; Standard: UINTER),
  * declared once, with their argument lists as Abaqus passes them (Fortran
  * convention: every argument by reference, lower-case symbol with a trailing
  * underscore, one hidden length per CHARACTER argument after all others).
@@ -131,6 +132,55 @@ void vuinter_(
     const mj_real* dpreDefMst,   /* (nPred, numDefTfv) */
     /* hidden CHARACTER lengths */
     int lenSurfInt, int lenSurfSlv, int lenSurfMst);
+
+/* UINTER: Abaqus/Standard, contact pairs (*SURFACE INTERACTION, USER,
+ * PROPERTIES=n, DEPVAR=m); one call per contact point and iteration.
+ * Abaqus/Standard is always double precision, so every REAL argument is
+ * double whatever MJ_DOUBLE_PRECISION says. Argument list of current
+ * releases (with AMKI, AMSKI and FREQR; older releases lack them); order
+ * [verified] against public working UINTER code, see docs/abaqus.md
+ * "Using it in Abaqus/Standard". What the routine does with the arguments is
+ * documented in uinter.cpp and docs/abaqus.md. */
+void uinter_(
+    /* to be defined */
+    double* stress,       /* (NDIR) pressure positive, then shear; in: start of increment */
+    double* ddsddr,       /* (NDIR,NDIR) d STRESS / d RDISP */
+    double* amki,         /* (NDIR,NDIR) not used */
+    double* amski,        /* (NDIR,NDIR) not used */
+    double* flux,         /* (2) set to 0: no heat */
+    double* ddfddt,       /* (2,2) set to 0 */
+    double* ddsddt,       /* (NDIR,2) set to 0 */
+    double* ddfddr,       /* (2,NDIR) set to 0 */
+    /* can be defined */
+    double* statev,       /* (NSTATV) in: start of increment, out: end */
+    double* sed,          /* elastic energy density */
+    double* sfd,          /* increment of frictional dissipation */
+    double* spd,          /* increment of plastic dissipation */
+    double* svd,          /* increment of viscous dissipation */
+    double* scd,          /* increment of creep dissipation */
+    double* pnewdt,       /* < 1 asks for a smaller increment */
+    /* for information */
+    const double* rdisp,  /* (NDIR) end of increment: RDISP(1) > 0 penetration, then accumulated slips */
+    const double* drdisp, /* (NDIR) increment of RDISP */
+    const double* temp, const double* dtemp,     /* (2) */
+    const double* predef, const double* dpred,   /* (2,NPRED) */
+    const double* time,   /* (2) step, total time at the end of the increment */
+    const double* dtime,
+    const double* freqr,
+    const char* ciname,   /* CHARACTER*80 surface interaction name */
+    const char* slname,   /* CHARACTER*80 */
+    const char* msname,   /* CHARACTER*80 */
+    const double* props,  /* (NPROPS) */
+    const double* coords, /* (MCRD) */
+    const double* alocaldir, /* (MCRD,MCRD) */
+    const double* drot,   /* (2,2) */
+    const double* area, const double* chrlngth,
+    const int* node, const int* ndir, const int* nstatv, const int* npred, const int* nprops,
+    const int* mcrd, const int* kstep, const int* kinc, const int* kit, const int* linper,
+    int* lopenclose, int* lstate, int* lsdi, /* not used: left as they come */
+    const int* lprint,
+    /* hidden CHARACTER lengths */
+    int lenCiname, int lenSlname, int lenMsname);
 
 #ifdef __cplusplus
 }

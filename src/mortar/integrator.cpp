@@ -12,10 +12,18 @@
 //   - where no strain-driven solution exists (a closure that jumps the shear
 //     stiffness back to ks, or a snap-back where softening outruns the elastic
 //     relaxation), a return at fixed separation along the flow direction.
+// The implicit scheme (docs/model.md 7.5) keeps this structure and replaces
+// the plastic substeps of a segment by backward-Euler steps
+// (Stepper::plastic_implicit, local problem in return_mapping.cpp); on
+// request it carries the derivatives of the working point with respect to
+// the separation increment through every step (Sensitivity), which gives the
+// consistent tangent of the whole update.
 #include "mortar/integrator.hpp"
 
 #include <algorithm>
 #include <cmath>
+
+#include <Eigen/LU>
 
 namespace mortar {
 
@@ -28,6 +36,7 @@ const char* failure_name(Failure f) {
     case Failure::non_finite_increment: return "separation increment is not finite";
     case Failure::invalid_state: return "invalid state";
     case Failure::non_finite_result: return "non-finite result";
+    case Failure::local_solve_failed: return "implicit return mapping did not converge at the smallest substep";
   }
   return "unknown";
 }
@@ -302,6 +311,305 @@ void correct_drift(const Model& M, Point& P) {
 
 bool crosses(bool open, double e_n) { return open ? e_n < 0 : e_n > 0; }
 
+// ---------------------------------------------------------------------------
+// Implicit scheme (docs/model.md 7.5).
+
+using Mat23 = Eigen::Matrix<double, 2, 3>;
+using Mat73 = Eigen::Matrix<double, 7, 3>;
+
+// Derivatives of the working point with respect to the separation increment
+// of the whole call (the consistent tangent is `sigma` at the end). The
+// separation is carried too, because every piece of the increment is the
+// rest of it, delta_end - delta_current, whose derivative is I - d delta.
+struct Sensitivity {
+  Mat3 sigma = Mat3::Zero(), kappa = Mat3::Zero(), plastic = Mat3::Zero(), separation = Mat3::Zero();
+  Mat23 damage = Mat23::Zero();  // (d_n, d_s)
+};
+
+// d sigma from the secant relation, Eq. 1: sigma = K(d, h) (delta - delta_p).
+void secant_sensitivity(const Model& M, const State& y, Sensitivity& D) {
+  const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
+  D.sigma = K.asDiagonal() * (D.separation - D.plastic);
+  if (y.open) {
+    const Vec3 e = y.elastic_separation();
+    D.sigma.row(0) -= M.p.kn * e[0] * D.damage.row(0);
+    D.sigma.row(1) -= M.p.ks * e[1] * D.damage.row(1);
+    D.sigma.row(2) -= M.p.ks * e[2] * D.damage.row(1);
+  }
+}
+
+// Derivatives through settle(): `pre` and `sigma` are the point before it
+// (D holds their derivatives), `post` the state after. The branches are those
+// settle() took: the secant damage where it lies inside (d_old, 1), the old
+// damage where it is clamped from below, 1 (and zero traction) at the top or
+// after a disintegration; then Eq. 1.
+void settle_sensitivity(const Model& M, const State& pre, const Vec3& sigma, const State& post, Sensitivity& D) {
+  // Zero elastic slip (pure opening): settle() leaves d_s alone, but for any
+  // slip perturbation the secant damage jumps to its directional limit
+  // 1 - (d tau/d slip)/(ks d delta_e_s/d slip), the same in every direction
+  // of the plane; the traction that follows is the step's own tau (unclamped
+  // limit), the old secant (limit below d_old) or zero (limit at 1).
+  enum class ShearLimit { none, step, zero } shear_limit = ShearLimit::none;
+  Eigen::Matrix<double, 2, 3> step_shear = D.sigma.bottomRows<2>();
+  if (pre.open) {
+    const Vec3 e = pre.elastic_separation();
+    const Mat3 De = D.separation - D.plastic;
+    if (std::hypot(e[1], e[2]) == 0 && De(1, 1) > 0 && post.ds < 1) {
+      const double raw = 1.0 - D.sigma(1, 1) / (M.p.ks * De(1, 1));
+      if (raw >= 1) shear_limit = ShearLimit::zero;
+      else if (!(raw < pre.ds)) shear_limit = ShearLimit::step;
+    }
+    if (e[0] > 0) {
+      const double k = M.p.kn * e[0];
+      const double raw = 1.0 - sigma[0] / k;
+      if (raw >= 1) D.damage.row(0).setZero();
+      else if (!(raw < pre.dn)) D.damage.row(0) = -D.sigma.row(0) / k + (sigma[0] / (k * e[0])) * De.row(0);
+    }
+    const double es = std::hypot(e[1], e[2]);
+    if (es > 0) {
+      const double tau = shear_norm(sigma);
+      const double k = M.p.ks * es;
+      const double raw = 1.0 - tau / k;
+      if (raw >= 1) {
+        D.damage.row(1).setZero();
+      } else if (!(raw < pre.ds)) {
+        Eigen::RowVector3d dtau = Eigen::RowVector3d::Zero();
+        if (tau > 0) dtau = (sigma[1] * D.sigma.row(1) + sigma[2] * D.sigma.row(2)) / tau;
+        const Eigen::RowVector3d des = (e[1] * De.row(1) + e[2] * De.row(2)) / es;
+        D.damage.row(1) = -dtau / k + (tau / (k * es)) * des;
+      }
+    }
+    if (post.dn >= 1) D.damage.row(0).setZero();
+    if (post.ds >= 1) D.damage.row(1).setZero();
+  }
+  secant_sensitivity(M, post, D);
+  if (shear_limit == ShearLimit::step) D.sigma.bottomRows<2>() = step_shear;
+  if (shear_limit == ShearLimit::zero) D.sigma.bottomRows<2>().setZero();
+}
+
+// One backward-Euler step of the rate statement from P over dd.
+struct BackwardEulerStep {
+  bool ok = false;
+  bool plastic = false;
+  Point N;                  // the end point, before settle()
+  LocalProblem problem;     // when plastic: the problem that was solved
+  LocalSolution solution;
+  LocalDerivatives end;     // flow and works at the end point
+  RateStiffness k{Vec3::Zero(), Vec3::Zero()};  // branch stiffnesses used
+  bool grow_n = true, grow_s = true;
+};
+
+BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st) {
+  BackwardEulerStep out;
+  out.N = P;
+  out.N.y.separation += dd;
+  // Loading or unloading. From inside the surface: the elastic trial with
+  // the secant stiffness (Eq. 1), elastic if it stays inside. From on the
+  // surface: the rate statement decides (below: the trial on the
+  // damage-growing branch), as stage() does with the sign of dF . kS dd. In
+  // the open regime the secant kbar (1 - d) can be so small late in the
+  // softening (1 - dn ~ 1e-5) that the secant trial rises by less than FTOL
+  // while the rate statement is loading; classifying that as elastic would
+  // stall the softening.
+  const Surface S = surface_of(M, P.y);
+  const bool on_surface = yield_function(P.sigma, S) >= -yield_tolerance(M, P.sigma);
+  const Vec3 sigma_e = P.sigma + secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
+  const RateStiffness k_grow = rate_stiffness(M, P.y);
+  const Flow f0 = flow_of(M, P.sigma, S, k_grow.on_flow);
+  // As in the explicit stage(): a flow that no stiffness can feed (open and
+  // fully damaged along it) leaves only the secant relation.
+  if ((!on_surface && yield_function(sigma_e, S) <= yield_tolerance(M, sigma_e)) || !(f0.dF.dot(f0.k_A_m) > 0)) {
+    out.N.sigma = traction_of(M, out.N.y);
+    out.ok = true;
+    return out;
+  }
+  out.plastic = true;
+  const Vec3 kappa(P.y.wI, P.y.wII, P.y.wIII);
+  // The branch logic is that of the explicit stage(): on the damage-growing
+  // branch first; a trial inside the surface there is unloading, and the
+  // step is elastic on the secant (damage frozen); where the growing
+  // solution would make the secant damage decrease, the frozen branch for
+  // that component, unless it has no plastic solution.
+  enum class Outcome { plastic, unloading, failed };
+  auto solve = [&](bool grow_n, bool grow_s, BackwardEulerStep& b) {
+    b.k = rate_stiffness(M, P.y, grow_n, grow_s);
+    b.grow_n = grow_n;
+    b.grow_s = grow_s;
+    const Vec3 trial = P.sigma + b.k.on_separation.cwiseProduct(dd);
+    if (yield_function(trial, S) <= yield_tolerance(M, trial)) return Outcome::unloading;
+    b.problem = make_local_problem(M, P.sigma, trial, b.k.on_flow, kappa);
+    // Forward-Euler predictor from P (the explicit rate statement over dd),
+    // where the consistency denominator there is positive.
+    const Flow fP = flow_of(M, P.sigma, S, b.k.on_flow);
+    Vec7 predictor;
+    const Vec7* start = nullptr;
+    if (fP.denominator > 0) {
+      const double dl0 = std::max(0.0, yield_function(trial, S)) / fP.denominator;
+      predictor << trial - dl0 * fP.k_A_m, dl0, kappa + dl0 * Vec3(fP.gI, fP.gII, fP.gIII);
+      if (predictor.allFinite()) start = &predictor;
+    }
+    b.solution = solve_local(M, b.problem, M.controls.ftol, start);
+    st.newton_iterations += b.solution.iterations;
+    if (!b.solution.converged) return Outcome::failed;
+    b.end = local_derivatives(M, b.solution.x.head<3>(), b.solution.x.tail<3>());
+    return Outcome::plastic;
+  };
+  auto elastic = [&]() {
+    out.plastic = false;
+    out.N.sigma = traction_of(M, out.N.y);
+    out.ok = true;
+    return out;
+  };
+  const Outcome grow = solve(true, true, out);
+  if (grow == Outcome::unloading) return elastic();
+  if (grow == Outcome::failed) return out;  // the caller halves the step
+  if (P.y.open) {
+    // Decided with the end-point plastic increment; exact for a finite step:
+    // d_old (dd - dp) <= b dp is the secant damage at the end not decreasing.
+    const Vec3 dp = out.solution.x[3] * out.end.m;
+    const bool keep_n = damage_grows_normal(M, P.y, dd, dp);
+    const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
+    if (!(keep_n && keep_s)) {
+      BackwardEulerStep frozen = out;
+      const Outcome f = solve(keep_n, keep_s, frozen);
+      if (f == Outcome::unloading) return elastic();
+      // No plastic solution on the frozen branch: the growing branch stands
+      // and settle() keeps the damage from decreasing.
+      if (f == Outcome::plastic) out = frozen;
+    }
+  }
+  const Vec7& x = out.solution.x;
+  const double dl = x[3];
+  const Vec3 dp = dl * out.end.m;
+  Point& N = out.N;
+  N.sigma = x.head<3>();
+  N.y.plastic += dp;
+  N.y.crack += crack_ratio(M).cwiseProduct(dp);
+  // gI, gIII >= 0 (Eqs. 7, 9), so the exact solution never lowers wI or
+  // wIII; the max only removes Newton's round-off (a work of -1e-22 where
+  // the rate is zero), which check_state() would reject.
+  N.y.wI = std::max(x[4], P.y.wI);
+  N.y.wII = x[5];
+  N.y.wIII = std::max(x[6], P.y.wIII);
+  // Trapezoidal in the traction: in the closed regime (constant K) this makes
+  // trapezoidal external work = elastic energy change + dissipation exactly.
+  N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
+  out.ok = N.sigma.allFinite() && x.allFinite();
+  return out;
+}
+
+// The closed-regime step that ends on the regime boundary delta_e_n = 0
+// (sigma_n = 0): the part theta of dd after which the backward-Euler end point
+// has zero normal traction. Used where a closed step whose trial is tensile
+// has no solution in the closed regime: on the fully softened cone (s = 0)
+// every admissible point has sigma_n <= 0, so a step that opens the joint
+// cannot end in the closed regime, and the crossing bracket of
+// plastic_implicit() never sees a crossing point. Returns ok with
+// N = the boundary point and `theta` set, or not ok.
+struct BoundaryStep {
+  bool ok = false;
+  double theta = 0;
+  Point N;
+};
+
+BoundaryStep backward_euler_to_boundary(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st) {
+  BoundaryStep out;
+  const RateStiffness k = rate_stiffness(M, P.y);
+  const Vec3 k_dd = k.on_separation.cwiseProduct(dd);
+  if (!(k_dd[0] > 0) || !(P.sigma[0] <= 0)) return out;
+  const Surface S = surface_of(M, P.y);
+  double theta = 0, dl = 0;
+  Vec3 m = Vec3::Zero(), sigma = Vec3::Zero(), kappa(P.y.wI, P.y.wII, P.y.wIII);
+  if (S.s_raw <= 0) {
+    // The cone |tau| + sigma_n tan(phi) = 0: the boundary point is its apex,
+    // sigma = 0, where the works do not change (g = 0, Eqs. 7-9) and the flow
+    // is (tan(psi), e) with |e| <= 1 (subgradient of |tau|). The shear
+    // returns to zero: dl kF_s e = tau_trial(theta); the normal: dl kF_n
+    // tan(psi) = sigma_n,trial(theta). With tan(psi) = 0 theta follows from
+    // the normal alone; otherwise h(theta) = theta k_dd_n + sigma_n,P -
+    // kF_n tan(psi) |tau_trial(theta)| / kF_s is increasing... solved by
+    // bisection on [0, 1] (h(0) = sigma_n,P <= 0).
+    const double tp = S.tan_psi;
+    auto tau_trial = [&](double th) { return Vec3(0, P.sigma[1] + th * k_dd[1], P.sigma[2] + th * k_dd[2]); };
+    auto h = [&](double th) {
+      return th * k_dd[0] + P.sigma[0] - k.on_flow[0] * tp * tau_trial(th).norm() / k.on_flow[1];
+    };
+    if (!(k.on_flow[1] > 0)) return out;
+    if (tp == 0) {
+      theta = -P.sigma[0] / k_dd[0];
+    } else {
+      if (!(h(1) >= 0)) return out;
+      double lo = 0, hi = 1;
+      for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) (h(0.5 * (lo + hi)) < 0 ? lo : hi) = 0.5 * (lo + hi);
+      theta = hi;
+    }
+    if (!(theta > 0 && theta <= 1)) return out;
+    const Vec3 t = tau_trial(theta);
+    dl = t.norm() / k.on_flow[1];
+    m = Vec3(tp, dl > 0 ? t[1] / (dl * k.on_flow[1]) : 0.0, dl > 0 ? t[2] / (dl * k.on_flow[1]) : 0.0);
+  } else {
+    const LocalProblem lp = make_boundary_problem(M, P.sigma, k_dd, k.on_flow, kappa);
+    const LocalSolution sol = solve_local(M, lp, M.controls.ftol);
+    st.newton_iterations += sol.iterations;
+    if (!sol.converged) return out;
+    theta = sol.x[0];
+    if (!(theta > 0 && theta <= 1)) return out;
+    dl = sol.x[3];
+    sigma = Vec3(0, sol.x[1], sol.x[2]);
+    kappa = sol.x.tail<3>();
+    m = local_derivatives(M, sigma, kappa).m;
+  }
+  const Vec3 dp = dl * m;
+  Point& N = out.N;
+  N = P;
+  N.sigma = sigma;
+  N.y.separation += theta * dd;
+  N.y.plastic += dp;
+  N.y.crack += crack_ratio(M).cwiseProduct(dp);
+  N.y.wI = std::max(kappa[0], P.y.wI);
+  N.y.wII = kappa[1];
+  N.y.wIII = std::max(kappa[2], P.y.wIII);
+  N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
+  out.theta = theta;
+  out.ok = N.sigma.allFinite() && N.y.plastic.allFinite();
+  return out;
+}
+
+// Derivatives through one backward-Euler step: DP at its start, Ddd the
+// derivative of its separation increment. The local residual R(x; sigma_P,
+// kappa_P, dd, k) = 0 at the solution gives dx = -J^-1 (dR/dinputs) dinputs.
+Sensitivity backward_euler_sensitivity(const Model& M, const Point& P, const Vec3& dd, const BackwardEulerStep& b,
+                                       const Sensitivity& DP, const Mat3& Ddd) {
+  Sensitivity D = DP;
+  D.separation = DP.separation + Ddd;
+  if (!b.plastic) {
+    secant_sensitivity(M, b.N.y, D);
+    return D;
+  }
+  // Frozen open components have the stiffness k (1 - d) of the damage at P.
+  Mat3 Dk = Mat3::Zero();
+  if (P.y.open) {
+    if (!b.grow_n && P.y.dn < 1) Dk.row(0) = -M.p.kn * DP.damage.row(0);
+    if (!b.grow_s && P.y.ds < 1) {
+      Dk.row(1) = -M.p.ks * DP.damage.row(1);
+      Dk.row(2) = -M.p.ks * DP.damage.row(1);
+    }
+  }
+  const double dl = b.solution.x[3];
+  const Mat3 Dtrial = DP.sigma + b.k.on_separation.asDiagonal() * Ddd + dd.asDiagonal() * Dk;
+  Mat73 B = Mat73::Zero();
+  B.topRows<3>() = -Dtrial + dl * b.end.m.asDiagonal() * Dk;  // k_sep = k_flow on a frozen branch
+  B.bottomRows<3>() = -DP.kappa;
+  B = b.problem.row_scale.asDiagonal() * B;
+  const Mat73 Dx = -Eigen::FullPivLU<Mat7>(b.solution.jacobian).solve(B);
+  D.sigma = Dx.topRows<3>();
+  D.kappa = Dx.bottomRows<3>();
+  const Eigen::RowVector3d Ddl = Dx.row(3);
+  const Mat3 Dm = b.end.m_sigma * D.sigma + b.end.m_kappa * D.kappa;
+  D.plastic = DP.plastic + b.end.m * Ddl + dl * Dm;
+  return D;
+}
+
 // Bracket on the substep size around a regime boundary: e_lo, e_hi are the
 // elastic normal separations at the ends of substeps of size lo and hi.
 struct Bracket {
@@ -320,6 +628,21 @@ struct Stepper {
   Point& P;
   IntegrationStatus& st;
   bool at_boundary = false;
+  Sensitivity* sens = nullptr;  // implicit scheme with a tangent requested
+  bool sensitivity_lost = false;  // a dependence on the increment was dropped (tangent approximate)
+  bool ended_plastic = false;   // the last segment had plastic flow (explicit continuum tangent)
+
+  bool implicit() const { return M.controls.scheme == Scheme::implicit; }
+  // A return at fixed separation or a regime switch: the point after it is
+  // treated as fixed (docs/model.md 7.5, what the tangent includes).
+  // Before any plastic flow in the increment the point does not depend on
+  // where a switch happens (elastic paths are path-independent), so nothing
+  // is lost then.
+  void forget_sensitivity() {
+    if (!sens) return;
+    if (st.plastic) sensitivity_lost = true;
+    *sens = Sensitivity{};
+  }
 
   int substeps() const { return st.substeps_accepted + st.substeps_rejected; }
 
@@ -327,6 +650,7 @@ struct Stepper {
   // surface. Returns the fraction of d done: 1, or less when the regime
   // switched inside (the point is then on the regime boundary).
   double plastic(const Vec3& d) {
+    if (implicit()) return plastic_implicit(d);
     const Controls& c = M.controls;
     const bool heun = c.scheme == Scheme::modified_euler;
     double T = 0, dT = 1;
@@ -427,6 +751,101 @@ struct Stepper {
     return 1;
   }
 
+  // The implicit scheme's plastic part (docs/model.md 7.5): backward-Euler
+  // steps over the plastic part of the segment, the whole of it first; a
+  // step whose Newton iteration fails is halved (recursively, down to the
+  // minimum substep, then Failure::local_solve_failed), and after a success
+  // the step doubles again. Snap-back at the start of a step and regime
+  // crossings are handled exactly as in plastic() above.
+  double plastic_implicit(const Vec3& d) {
+    const Controls& c = M.controls;
+    double T = 0, dT = 1;
+    int cuts = 0;
+    Bracket cut;
+    for (int pass = 0; T < 1; ++pass) {
+      if (substeps() >= c.max_substeps || pass >= 4 * c.max_substeps) {
+        st.failure = Failure::too_many_substeps;
+        return T;
+      }
+      dT = std::min(dT, 1 - T);
+      const Vec3 dd = dT * d;
+      if (stage(M, P, dd).snapback) {  // no strain-driven solution from here
+        if (!relax(M, P, st, true)) { st.failure = Failure::relaxation_failed; return T; }
+        forget_sensitivity();
+        continue;
+      }
+      const BackwardEulerStep b = backward_euler(M, P, dd, st);
+      if (!b.ok && !P.y.open && P.sigma[0] + M.p.kn * dd[0] > 0) {
+        // No closed-regime solution and a tensile trial: the step may cross
+        // into the open regime where no closed point exists; end it on the
+        // boundary instead (backward_euler_to_boundary()).
+        const BoundaryStep e = backward_euler_to_boundary(M, P, dd, st);
+        if (e.ok) {
+          const Vec3 e_start = P.y.elastic_separation();
+          P = e.N;
+          P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
+          settle(M, P, e_start);
+          forget_sensitivity();
+          ++st.substeps_accepted;
+          at_boundary = true;
+          return std::min(T + e.theta * dT, 1.0);
+        }
+      }
+      if (!b.ok) {
+        if (dT > c.min_substep) {
+          dT = std::max(0.5 * dT, c.min_substep);
+          ++st.substeps_rejected;
+          continue;
+        }
+        st.failure = Failure::local_solve_failed;
+        return T;
+      }
+      const Point& N = b.N;
+      // Regime crossing inside the step: as in plastic().
+      const double e0 = P.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
+      const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(N.y);
+      const bool crossed = crosses(P.y.open, e1);
+      bool switch_here = false;
+      if (crossed && std::abs(e0) <= boundary_eps(P.y)) {
+        at_boundary = true;
+        return T;
+      }
+      if (crossed || cut.active) {
+        if (!cut.active) cut = Bracket{true, 0.0, e0, dT, e1};
+        else if (crossed) { cut.hi = dT; cut.e_hi = e1; }
+        else { cut.lo = dT; cut.e_lo = e1; }
+        if (std::abs(e1) > near && cuts < kMaxCrossingCuts) {
+          dT = cut.next(cuts);
+          ++cuts;
+          continue;
+        }
+        switch_here = crossed || std::abs(e1) <= near;
+      }
+      cuts = 0;
+      cut = Bracket{};
+      if (sens) {
+        // This step covers dT/(1 - T) of what is left of the increment.
+        const Mat3 Ddd = (dT / (1 - T)) * (Mat3::Identity() - sens->separation);
+        *sens = backward_euler_sensitivity(M, P, dd, b, *sens, Ddd);
+      }
+      const Vec3 e_start = P.y.elastic_separation();
+      P = N;
+      if (switch_here) P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
+      const State pre = P.y;
+      const Vec3 sigma_pre = P.sigma;
+      settle(M, P, e_start);
+      if (sens) settle_sensitivity(M, pre, sigma_pre, P.y, *sens);
+      ++st.substeps_accepted;
+      T += dT;
+      if (switch_here) {
+        at_boundary = true;
+        return std::min(T, 1.0);
+      }
+      dT = 2 * dT;
+    }
+    return 1;
+  }
+
   // Local error of the Heun pair relative to the end values (Sloan et al.
   // 2001, Eq. for R_n+1), over the traction, the softening factor and the
   // wear exponent; the traction norm is floored at 1e-3 ft0 so that states
@@ -461,9 +880,19 @@ struct Stepper {
     const bool on_surface = std::abs(F0) <= tol0;
     const bool loading = n.dot(dsig) > 0;
     const bool at_edge = frac * std::abs(rest[0]) <= boundary_eps(P.y);
-    if (F_at(frac) <= tol_at(frac) && !(on_surface && loading && at_edge)) {
+    // Implicit scheme: a point on the surface that the rate statement loads
+    // (dF . kS rest > 0, kS on the damage-growing branch) is plastic however
+    // small the increment (see backward_euler()).
+    const bool rate_loading =
+        implicit() && on_surface && n.dot(rate_stiffness(M, P.y).on_separation.cwiseProduct(rest)) > 0;
+    if (F_at(frac) <= tol_at(frac) && !(on_surface && loading && at_edge) && !rate_loading) {
       P.y.separation += frac * rest;
       P.sigma = traction_of(M, P.y);
+      if (sens) {
+        sens->separation += frac * (Mat3::Identity() - sens->separation);
+        secant_sensitivity(M, P.y, *sens);
+      }
+      ended_plastic = false;
       at_boundary = boundary;
       return frac;
     }
@@ -483,13 +912,53 @@ struct Stepper {
         }
       }
     }
+    if (a_y > 0 && implicit()) a_y = refine_intersection(a_y, frac, rest, K, e0, S);
     if (a_y > 0) {
       P.y.separation += a_y * rest;
       P.sigma = traction_of(M, P.y);
+      if (sens) intersection_sensitivity(a_y, rest, K);
     }
     st.plastic = true;
+    ended_plastic = true;
     const double done = plastic((1 - a_y) * rest);
     return a_y + (1 - a_y) * done;
+  }
+
+  // Implicit scheme: Newton on the intersection fraction, from Pegasus's
+  // answer (within FTOL) to round-off, so that the update is a smooth function
+  // of the increment and its tangent can be checked by finite differences.
+  double refine_intersection(double a, double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
+                             const Surface& S) const {
+    auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
+    double f = F_at(a);
+    for (int it = 0; it < 4 && f != 0; ++it) {
+      const Vec3 sigma = K.cwiseProduct(e0 + a * rest);
+      const double slope = flow_of(M, sigma, S, K).dF.dot(K.cwiseProduct(rest));
+      if (!(slope > 0)) break;
+      const double an = std::clamp(a - f / slope, 0.0, frac);
+      const double fn = F_at(an);
+      if (!(std::abs(fn) < std::abs(f))) break;
+      a = an;
+      f = fn;
+    }
+    return a;
+  }
+
+  // The intersection fraction a moves with the increment: F(K o (e0 + a
+  // rest), kappa) = 0 with rest = delta_end - delta_start gives
+  // da = -(dF . dsigma|_a + dF/dkappa . dkappa) / (dF . K o rest).
+  void intersection_sensitivity(double a, const Vec3& rest, const Vec3& K) {
+    Sensitivity& D = *sens;
+    D.separation += a * (Mat3::Identity() - D.separation);
+    secant_sensitivity(M, P.y, D);  // at fixed a
+    const LocalDerivatives ld = local_derivatives(M, P.sigma, Vec3(P.y.wI, P.y.wII, P.y.wIII));
+    const Vec3 k_rest = K.cwiseProduct(rest);
+    const double slope = ld.F_sigma.dot(k_rest);
+    if (!(std::abs(slope) > 0)) return;
+    const Eigen::RowVector3d da =
+        -(ld.F_sigma.transpose() * D.sigma + ld.F_kappa.transpose() * D.kappa) / slope;
+    D.separation += rest * da;
+    D.sigma += k_rest * da;
   }
 
   template <class Fn, class Tol>
@@ -510,13 +979,18 @@ struct Stepper {
   // energy that the jump removes (opening) or adds (closing) is booked, and a
   // closing that lands outside the surface returns to it at fixed separation.
   bool switch_regime() {
+    forget_sensitivity();
     const double before = elastic_energy(M, P.y);
     P.y.open = !P.y.open;
     P.y.energy_unilateral += before - elastic_energy(M, P.y);
     ++st.regime_switches;
     disintegrate_if_no_strength(M, P.y);
     P.sigma = traction_of(M, P.y);
-    if (yield_of(M, P) > yield_tolerance(M, P.sigma)) return relax(M, P, st, false);
+    if (yield_of(M, P) > yield_tolerance(M, P.sigma)) {
+      // The return depends on where the switch happened: treated as fixed.
+      sensitivity_lost = true;
+      return relax(M, P, st, false);
+    }
     return true;
   }
 };
@@ -527,7 +1001,22 @@ bool finite(const State& s) {
 
 }  // namespace
 
+Mat3 continuum_tangent(const Model& M, const State& y, const Vec3& sigma) {
+  const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
+  const Surface S = surface_of(M, y);
+  const RateStiffness k = rate_stiffness(M, y);
+  const Flow f = flow_of(M, sigma, S, k.on_flow);
+  if (yield_function(sigma, S) < -yield_tolerance(M, sigma) || !(f.denominator > 0)) return K.asDiagonal();
+  // Eq. 20: dsigma = kS (dd - m dl), dl = dF . kS dd / denominator.
+  return Mat3(k.on_separation.asDiagonal()) -
+         f.k_A_m * f.dF.cwiseProduct(k.on_separation).transpose() / f.denominator;
+}
+
 IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d) {
+  return integrate_increment(M, state, d, nullptr);
+}
+
+IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
   IncrementResult res;
   IntegrationStatus& st = res.status;
   auto fail = [&](Failure f) {
@@ -537,6 +1026,13 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d)
     state.substeps_rejected = st.substeps_rejected;
     res.traction = check_state(state) ? Vec3::Zero() : traction_of(M, state);
     res.elastic_energy = check_state(state) ? 0.0 : elastic_energy(M, state);
+    if (tangent) {
+      // The secant of the start state: finite, and the stiffness a solver
+      // that cuts the increment back will meet first.
+      *tangent = check_state(state) ? Mat3(Vec3(M.p.kn, M.p.ks, M.p.ks).asDiagonal())
+                                    : Mat3(secant_stiffness(M, state.dn, state.ds, state.open).asDiagonal());
+      st.tangent_approximate = true;
+    }
     return res;
   };
   if (check_state(state)) return fail(Failure::invalid_state);
@@ -544,6 +1040,8 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d)
 
   Point P{state, traction_of(M, state)};
   Stepper step{M, P, st};
+  Sensitivity sensitivity;
+  if (tangent && M.controls.scheme == Scheme::implicit) step.sens = &sensitivity;
   const Vec3 sep_end = state.separation + d;
   double left = 1;  // fraction of d still to integrate
   for (int seg = 0; left > 1e-15; ++seg) {
@@ -576,6 +1074,17 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d)
   }
   if (!finite(P.y) || !P.sigma.allFinite()) return fail(Failure::non_finite_result);
 
+  if (tangent) {
+    if (step.sens) {
+      *tangent = sensitivity.sigma;
+      st.tangent_approximate = step.sensitivity_lost;
+    } else {
+      *tangent = step.ended_plastic ? continuum_tangent(M, P.y, P.sigma)
+                                    : Mat3(secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).asDiagonal());
+      st.tangent_approximate = step.ended_plastic;
+    }
+    if (!tangent->allFinite()) return fail(Failure::non_finite_result);
+  }
   res.d_dissipation_plastic = P.y.dissipation_plastic - state.dissipation_plastic;
   res.d_dissipation_damage = P.y.dissipation_damage - state.dissipation_damage;
   res.d_energy_unilateral = P.y.energy_unilateral - state.energy_unilateral;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mortar/parameters.hpp"
+#include "mortar/return_mapping.hpp"
 #include "mortar/state.hpp"
 #include "mortar/surface.hpp"
 
@@ -17,6 +18,7 @@ enum class Failure : int {
   non_finite_increment = 4,  // the separation increment holds NaN or infinity
   invalid_state = 5,         // the incoming state breaks a rule (see check_state)
   non_finite_result = 6,     // a guard: never returned, the start state is kept instead
+  local_solve_failed = 7,    // implicit scheme: Newton failed at the smallest plastic substep
 };
 const char* failure_name(Failure f);
 
@@ -28,6 +30,12 @@ struct IntegrationStatus {
   bool plastic = false;       // any plastic flow in the increment
   bool min_substep_hit = false;  // a substep was accepted at the minimum size above STOL
   Failure failure = Failure::none;
+  int newton_iterations = 0;     // implicit scheme: Newton iterations of all local solves
+  // The tangent returned on request is not the exact derivative of this
+  // update: an explicit scheme (continuum tangent, Eq. 20), a return at fixed
+  // separation, or a regime switch in an increment with plastic flow (the
+  // switch point is held fixed); docs/model.md 7.5.
+  bool tangent_approximate = false;
   bool ok() const { return failure == Failure::none; }
 };
 
@@ -50,6 +58,24 @@ const char* check_state(const State& s);
 // it was and the result holds the start traction; nothing returned is ever
 // NaN or infinite.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation);
+
+// The same, and, when `tangent` is not null, the tangent d traction_end /
+// d d_separation (law signs) of this update (docs/model.md 7.5):
+//   - implicit scheme: the consistent (algorithmic) tangent of the backward
+//     Euler update, through the elastic-plastic intersection, every plastic
+//     substep (linearised local residuals at convergence) and the secant
+//     damage rule; exact except where status.tangent_approximate says;
+//   - explicit schemes: the continuum elastic-plastic tangent (Eq. 20) at the
+//     end point after plastic flow, else the secant stiffness;
+//   - elastic increment: the secant stiffness K(d, h) (Eq. 21);
+//   - failed increment: the secant stiffness of the start state.
+// Fixed-size, allocates nothing.
+IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation, Mat3* tangent);
+
+// The continuum (rate) tangent of Eq. 20 at a state and its traction, on the
+// damage-growing branch: kS - (kF o m)(dF o kS)^T / denominator when the
+// point is on the surface and the denominator is positive, else K(d, h).
+Mat3 continuum_tangent(const Model& model, const State& state, const Vec3& traction);
 
 // Runs integrate_increment over a block of points whose states lie in the
 // solver's flat array: point k's state starts at state + k * state_stride.

@@ -32,6 +32,8 @@ double* slot(Parameters& p, int i) {
 }
 
 constexpr double kDegree = 3.14159265358979323846 / 180.0;
+constexpr const char* kSchemeRule =
+    "scheme is 1 (modified Euler), 2 (forward Euler) or 3 (implicit, backward Euler)";
 
 ValidationError fail(int index, const char* name, double value, const char* rule) {
   return ValidationError{index, name, value, rule};
@@ -59,6 +61,7 @@ const char* scheme_name(Scheme s) {
   switch (s) {
     case Scheme::modified_euler: return "modified-euler";
     case Scheme::forward_euler: return "forward-euler";
+    case Scheme::implicit: return "backward-euler";
   }
   return "unknown";
 }
@@ -106,7 +109,7 @@ ValidationError validate(const Parameters& p) {
 
 ValidationError validate(const Controls& c) {
   int s = static_cast<int>(c.scheme);
-  if (s != 1 && s != 2) return fail(14, "scheme", s, "scheme is 1 (modified Euler) or 2 (forward Euler)");
+  if (s != 1 && s != 2 && s != 3) return fail(14, "scheme", s, kSchemeRule);
   if (!(c.stol > 0 && c.stol < 1)) return fail(15, "stol", c.stol, "0 < STOL < 1");
   if (!(c.ftol > 0 && c.ftol < 1)) return fail(16, "ftol", c.ftol, "0 < FTOL < 1");
   if (!(c.max_substeps >= 1)) return fail(17, "max_substeps", c.max_substeps, "max substeps >= 1");
@@ -131,7 +134,7 @@ ValidationError read_props(const double* props, int n_props, Parameters& p, Cont
   for (int i = kParameterCount; i < n_props && i < 19; ++i)
     if (!std::isfinite(props[i])) return fail(i, "control", props[i], "must be a finite number");
   if (double v = opt(14); v != 0) {
-    if (v != 1 && v != 2) return fail(14, "scheme", v, "scheme is 1 (modified Euler) or 2 (forward Euler)");
+    if (v != 1 && v != 2 && v != 3) return fail(14, "scheme", v, kSchemeRule);
     c.scheme = static_cast<Scheme>(static_cast<int>(v));
   }
   if (double v = opt(15); v != 0) c.stol = v;

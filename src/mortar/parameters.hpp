@@ -46,6 +46,7 @@ int parameter_index(const std::string& name);
 enum class Scheme : int {
   modified_euler = 1,  // Sloan, Abbo & Sheng (2001): Heun pair, error control (default)
   forward_euler = 2,   // one explicit step, no error control (baseline)
+  implicit = 3,        // backward Euler return mapping, Newton, consistent tangent (docs/model.md 7.5)
 };
 const char* scheme_name(Scheme s);
 
@@ -55,6 +56,7 @@ struct Controls {
   double stol = 1e-5;        // relative local error tolerance of a substep
   double ftol = 1e-8;        // yield-surface tolerance, relative to max(|sigma|, ft0)
   double min_substep = 1e-4; // smallest substep, as a fraction of the increment
+                             // (implicit: the smallest plastic substep after halvings)
   int max_substeps = 100000; // accepted + rejected substeps allowed per increment
 };
 

@@ -478,7 +478,7 @@ TEST_CASE("invalid properties and controls are reported with name, value and rul
       {3, 0.5, {"'c0' (props(4))", "= 0.5", "c0 > ft0*tan(phi0)"}},
       {0, -1.0, {"'kn' (props(1))", "kn > 0"}},
       {7, 45.0, {"'phir' (props(8))", "phir <= phi0"}},
-      {14, 3.0, {"props(15)", "scheme is 1"}},
+      {14, 4.0, {"props(15)", "scheme is 1"}},
       {15, 2.0, {"props(16)", "STOL"}},
       {19, 0.5, {"props(20)", "0 (default, = -1), -1 or +1"}},
   };

@@ -1,0 +1,347 @@
+// Tests of the Abaqus/Standard adapter UINTER through its C ABI (always double
+// precision): DDSDDR against central differences of STRESS with respect to
+// RDISP, calls that Abaqus repeats within an increment, the defaults, linear
+// perturbation, unpaired points, the cut-back request and the error reports.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "mortar/integrator.hpp"
+#include "paper_sets.hpp"
+#include "vuinteraction.h"
+
+namespace {
+
+namespace slot = mortar::slot;
+constexpr int kStates = mortar::kStateCount;
+
+std::vector<double> paper_props(const mortar::Parameters& p, int n_props = 14) {
+  std::vector<double> props(n_props, 0.0);
+  for (int i = 0; i < std::min(n_props, 14); ++i) props[i] = mortar::parameter_at(p, i);
+  return props;
+}
+
+struct Name80 {
+  char text[80];
+  explicit Name80(const char* s) {
+    std::memset(text, ' ', sizeof text);
+    std::memcpy(text, s, std::min(std::strlen(s), sizeof text));
+  }
+};
+
+// One contact point as Abaqus/Standard passes it. `statev` is the state at
+// the start of the increment (the caller's copy); call() works on a copy of
+// it, as Abaqus does, and leaves the end state in `out_statev`.
+struct Point {
+  int n_dir, n_states = kStates, linper = 0, node = 4711;
+  std::vector<double> props;
+  std::vector<double> statev, out_statev;
+  double stress[3] = {}, ddsddr[9] = {}, rdisp[3] = {}, drdisp[3] = {};
+  double sed = 0, sfd = 0, spd = 0, svd = 0, scd = 0, pnewdt = 0;
+  double flux[2] = {7, 7}, ddfddt[4] = {7, 7, 7, 7}, ddsddt[6] = {7, 7, 7, 7, 7, 7}, ddfddr[6] = {7, 7, 7, 7, 7, 7};
+  Name80 name{"MORTAR-STD"};
+
+  Point(int dir, std::vector<double> p) : n_dir(dir), props(std::move(p)), statev(kStates, 0.0) {}
+
+  void call() {
+    out_statev = statev;
+    double amki[9] = {}, amski[9] = {}, temp[2] = {}, dtemp[2] = {}, predef[2] = {}, dpred[2] = {}, time[2] = {};
+    double coords[3] = {}, alocal[9] = {}, drot[4] = {1, 0, 0, 1};
+    const double dtime = 0.01, freqr = 0, area = 1, chrlngth = 10;
+    const int npred = 1, nprops = int(props.size()), mcrd = 3, kstep = 1, kinc = 1, kit = 0, lprint = 0;
+    int lopenclose = -1, lstate = -1, lsdi = 0;
+    const Name80 blank("");
+    pnewdt = 1e36;
+    uinter_(stress, ddsddr, amki, amski, flux, ddfddt, ddsddt, ddfddr, out_statev.data(), &sed, &sfd, &spd, &svd,
+            &scd, &pnewdt, rdisp, drdisp, temp, dtemp, predef, dpred, time, &dtime, &freqr, name.text, blank.text,
+            blank.text, props.data(), coords, alocal, drot, &area, &chrlngth, &node, &n_dir, &n_states, &npred,
+            &nprops, &mcrd, &kstep, &kinc, &kit, &linper, &lopenclose, &lstate, &lsdi, &lprint, 80, 80, 80);
+    CHECK(lopenclose == -1);  // not used: left as it came
+    CHECK(lsdi == 0);
+  }
+  // Moves to the relative position `r` (RDISP at the end of the increment)
+  // from `r0` (the start), as one increment.
+  void to(const double* r0, const double* r) {
+    for (int i = 0; i < n_dir; ++i) {
+      rdisp[i] = r[i];
+      drdisp[i] = r[i] - r0[i];
+    }
+    call();
+  }
+  // Commits the increment (Abaqus: converged).
+  void commit() { statev = out_statev; }
+  double D(int i, int j) const { return ddsddr[i + j * n_dir]; }
+};
+
+class StderrCapture {
+ public:
+  StderrCapture() : file_(std::tmpfile()), saved_(dup(2)) {
+    std::fflush(stderr);
+    dup2(fileno(file_), 2);
+  }
+  ~StderrCapture() {
+    std::fflush(stderr);
+    dup2(saved_, 2);
+    close(saved_);
+    std::fclose(file_);
+  }
+  std::string text() {
+    std::fflush(stderr);
+    std::string out;
+    std::rewind(file_);
+    for (int c; (c = std::fgetc(file_)) != EOF;) out += char(c);
+    return out;
+  }
+
+ private:
+  std::FILE* file_;
+  int saved_;
+};
+
+// Drives a point along a straight path of RDISP in n converged increments.
+void drive(Point& pt, double* r, const double* target, int n) {
+  double start[3];
+  for (int k = 0; k < n; ++k) {
+    std::copy(r, r + 3, start);
+    for (int i = 0; i < 3; ++i) r[i] = start[i] + (target[i] - start[i]) / (n - k);
+    pt.to(start, r);
+    REQUIRE(pt.pnewdt >= 1);
+    pt.commit();
+  }
+}
+
+// Central differences of STRESS with respect to RDISP(j) (DRDISP moving with
+// it) from the same start state; relative Frobenius error of DDSDDR.
+double ddsddr_fd_error(Point pt, const double* r0, const double* r1, double h) {
+  pt.to(r0, r1);
+  const int n = pt.n_dir;
+  std::vector<double> analytic(pt.ddsddr, pt.ddsddr + n * n), fd(n * n);
+  for (int j = 0; j < n; ++j) {
+    double rp[3], rm[3];
+    std::copy(r1, r1 + 3, rp);
+    std::copy(r1, r1 + 3, rm);
+    rp[j] += h;
+    rm[j] -= h;
+    pt.to(r0, rp);
+    double sp[3];
+    std::copy(pt.stress, pt.stress + 3, sp);
+    pt.to(r0, rm);
+    for (int i = 0; i < n; ++i) fd[i + j * n] = (sp[i] - pt.stress[i]) / (2 * h);
+  }
+  double num = 0, den = 0;
+  for (int k = 0; k < n * n; ++k) {
+    num += (analytic[k] - fd[k]) * (analytic[k] - fd[k]);
+    den += analytic[k] * analytic[k];
+  }
+  std::printf("[uinter] DDSDDR rel. FD error %.2e:", std::sqrt(num / den));
+  for (int k = 0; k < n * n; ++k) std::printf(" %.6g", analytic[k]);
+  std::printf("\n");
+  return std::sqrt(num / den);
+}
+
+}  // namespace
+
+TEST_CASE("UINTER: DDSDDR is d STRESS / d RDISP (central differences)", "[uinter]") {
+  SECTION("closed: shear at compression on the softening branch (3D)") {
+    Point pt(3, paper_props(mortar::testing::van_der_pluijm(-0.5)));
+    double r[3] = {1e-4, 0, 0};  // initial overclosure: the reference
+    const double pressed[3] = {1e-4 + 0.5 / 209.9, 0, 0};
+    drive(pt, r, pressed, 2);
+    const double sheared[3] = {pressed[0], 0.02, 0.0};
+    drive(pt, r, sheared, 10);
+    REQUIRE(pt.statev[slot::work_II] > 0);
+    const double r1[3] = {r[0] + 1e-4, r[1] + 2e-3, r[2] + 5e-4};
+    CHECK(ddsddr_fd_error(pt, r, r1, 1e-8) < 1e-6);
+    // Pressure positive; the shear stress and its stiffness follow the slip (+1).
+    pt.to(r, r1);
+    CHECK(pt.stress[0] > 0);
+    CHECK(pt.stress[1] > 0);
+  }
+  SECTION("open: tension softening (2D)") {
+    Point pt(2, paper_props(mortar::testing::almeida_m15()));
+    double r[3] = {0, 0, 0};
+    const double opened[3] = {-0.004, 0, 0};  // a gap: RDISP(1) < 0
+    drive(pt, r, opened, 40);
+    REQUIRE(pt.statev[slot::damage_n] > 0.3);
+    const double r1[3] = {r[0] - 1e-3, 0, 0};
+    CHECK(ddsddr_fd_error(pt, r, r1, 1e-8) < 1e-6);
+    pt.to(r, r1);
+    CHECK(pt.stress[0] < 0);      // tension: negative pressure
+    CHECK(pt.D(0, 0) < 0);        // softening
+  }
+  SECTION("mixed: opening and sliding (3D)") {
+    Point pt(3, paper_props(mortar::testing::almeida_m34()));
+    double r[3] = {0, 0, 0};
+    const double target[3] = {-0.001, 0.003, 0};
+    drive(pt, r, target, 10);
+    const double r1[3] = {r[0] - 2e-4, r[1] + 2e-3, r[2] - 1e-3};
+    CHECK(ddsddr_fd_error(pt, r, r1, 1e-8) < 1e-6);
+  }
+}
+
+TEST_CASE("UINTER: a call Abaqus repeats commits nothing", "[uinter]") {
+  Point pt(3, paper_props(mortar::testing::van_der_pluijm(-0.5)));
+  double r[3] = {0, 0, 0};
+  const double target[3] = {0.5 / 209.9, 0.01, 0};
+  drive(pt, r, target, 5);
+  const std::vector<double> start = pt.statev;
+  const double r1[3] = {r[0], r[1] + 0.004, r[2] + 0.001};
+  pt.to(r, r1);
+  const std::vector<double> end1 = pt.out_statev;
+  double s1[3], d1[9];
+  std::copy(pt.stress, pt.stress + 3, s1);
+  std::copy(pt.ddsddr, pt.ddsddr + 9, d1);
+  // An overshooting iteration in between, then the same call again.
+  const double r2[3] = {r[0], r[1] + 0.008, r[2]};
+  pt.to(r, r2);
+  CHECK(pt.statev == start);  // the caller's copy is never written
+  pt.to(r, r1);
+  CHECK(pt.out_statev == end1);
+  for (int i = 0; i < 3; ++i) CHECK(pt.stress[i] == s1[i]);
+  for (int i = 0; i < 9; ++i) CHECK(pt.ddsddr[i] == d1[i]);
+  // Abaqus's first iteration of an increment (DRDISP = 0) returns the start traction.
+  pt.to(r, r);
+  mortar::State s;
+  mortar::load_state(start.data(), s);
+  mortar::Controls c;
+  c.scheme = mortar::Scheme::implicit;
+  const mortar::Model M = mortar::make_model(mortar::testing::van_der_pluijm(-0.5), c);
+  const mortar::Vec3 t = mortar::traction_of(M, s);
+  CHECK(pt.stress[0] == Approx(-t[0]).epsilon(1e-14));
+  CHECK(pt.stress[1] == Approx(t[1]).epsilon(1e-14));
+}
+
+TEST_CASE("UINTER: the first call sets the reference at the start of its increment", "[uinter]") {
+  Point pt(2, paper_props(mortar::testing::almeida_m15()));
+  pt.rdisp[0] = 2e-4 + 1e-5;  // overclosure at the end of the first increment
+  pt.drdisp[0] = 1e-5;        // of which 1e-5 in this increment
+  pt.call();
+  CHECK(pt.out_statev[slot::initialised] == 1);
+  CHECK(pt.out_statev[slot::reference_penetration] == Approx(2e-4).epsilon(1e-14));
+  CHECK(pt.out_statev[slot::separation_n] == Approx(-1e-5).epsilon(1e-10));
+  CHECK(pt.stress[0] == Approx(741.1 * 1e-5).epsilon(1e-10));  // pressure
+  // Defaults: elastic tangent diag(kn, ks) with the +1 shear sign.
+  CHECK(pt.D(0, 0) == Approx(741.1));
+  CHECK(pt.D(1, 1) == Approx(308.8));
+  CHECK(pt.D(0, 1) == 0);
+  CHECK(pt.flux[0] == 0);
+  CHECK(pt.ddsddt[0] == 0);
+  CHECK(pt.sfd == 0);
+}
+
+TEST_CASE("UINTER: linear perturbation uses the base state's stiffness and keeps the state", "[uinter]") {
+  Point pt(3, paper_props(mortar::testing::almeida_m15()));
+  double r[3] = {0, 0, 0};
+  const double opened[3] = {-0.004, 0.0005, 0};
+  drive(pt, r, opened, 20);
+  pt.linper = 1;
+  pt.rdisp[0] = -1e-6;  // perturbations
+  pt.rdisp[1] = 2e-6;
+  pt.rdisp[2] = 0;
+  std::copy(pt.rdisp, pt.rdisp + 3, pt.drdisp);
+  pt.call();
+  CHECK(pt.out_statev == pt.statev);
+  const double dn = pt.statev[slot::damage_n], ds = pt.statev[slot::damage_s];
+  CHECK(pt.D(0, 0) == Approx(741.1 * (1 - dn)));
+  CHECK(pt.D(1, 1) == Approx(308.8 * (1 - ds)));
+  CHECK(pt.stress[0] == Approx(pt.D(0, 0) * -1e-6));
+  CHECK(pt.stress[1] == Approx(pt.D(1, 1) * 2e-6));
+}
+
+TEST_CASE("UINTER: an unpaired point carries nothing and keeps its state", "[uinter]") {
+  Point pt(3, paper_props(mortar::testing::almeida_m15()));
+  pt.statev[slot::work_I] = 1e-3;
+  pt.rdisp[0] = -1e36;
+  pt.call();
+  CHECK(pt.out_statev == pt.statev);
+  for (int i = 0; i < 3; ++i) CHECK(pt.stress[i] == 0);
+  for (int i = 0; i < 9; ++i) CHECK(pt.ddsddr[i] == 0);
+}
+
+TEST_CASE("UINTER: a rejected increment asks for a smaller one and leaves finite outputs", "[uinter]") {
+  Point pt(3, paper_props(mortar::testing::almeida_m15()));
+  double r[3] = {0, 0, 0};
+  const double target[3] = {-0.002, 0.001, 0};
+  drive(pt, r, target, 5);
+  pt.rdisp[0] = r[0];
+  pt.rdisp[1] = std::numeric_limits<double>::infinity();
+  pt.rdisp[2] = 0;
+  StderrCapture err;
+  pt.call();
+  const std::string message = err.text();
+  INFO("stderr: " << message);
+  CHECK(pt.pnewdt == 0.5);
+  CHECK(message.find("UINTER, interaction 'MORTAR-STD': node 4711") != std::string::npos);
+  CHECK(message.find("PNEWDT = 0.5") != std::string::npos);
+  CHECK(pt.out_statev[slot::status] == int(mortar::Failure::non_finite_increment));
+  CHECK(pt.out_statev[slot::plastic_n] == pt.statev[slot::plastic_n]);
+  for (int i = 0; i < 3; ++i) CHECK(std::isfinite(pt.stress[i]));
+  for (int i = 0; i < 9; ++i) CHECK(std::isfinite(pt.ddsddr[i]));
+  CHECK(std::isfinite(pt.sed));
+}
+
+TEST_CASE("UINTER: bad arguments and properties are reported and coded in SDV 21", "[uinter][errors]") {
+  SECTION("a property") {
+    std::vector<double> props = paper_props(mortar::testing::almeida_m15(), 20);
+    props[3] = 0.5;
+    Point pt(3, props);
+    pt.stress[1] = std::numeric_limits<double>::quiet_NaN();
+    StderrCapture err;
+    pt.call();
+    const std::string message = err.text();
+    CHECK(message.find("UINTER, interaction 'MORTAR-STD': property 'c0' (props(4)) = 0.5") != std::string::npos);
+    CHECK(pt.out_statev[slot::status] == -4);
+    for (int i = 0; i < 3; ++i) CHECK(std::isfinite(pt.stress[i]));
+    for (int i = 0; i < 9; ++i) CHECK(pt.ddsddr[i] == 0);
+  }
+  SECTION("the shear sign") {
+    std::vector<double> props = paper_props(mortar::testing::almeida_m15(), 20);
+    props[19] = 0.5;
+    Point pt(3, props);
+    StderrCapture err;
+    pt.call();
+    CHECK(err.text().find("props(20) is 0 (default, = +1), -1 or +1") != std::string::npos);
+    CHECK(pt.out_statev[slot::status] == -4);
+  }
+  SECTION("NSTATV") {
+    Point pt(3, paper_props(mortar::testing::almeida_m15()));
+    pt.n_states = 21;
+    StderrCapture err;
+    pt.call();
+    CHECK(err.text().find("argument NSTATV = 21") != std::string::npos);
+    CHECK(pt.out_statev[slot::status] == -2);
+  }
+  SECTION("NDIR") {
+    Point pt(3, paper_props(mortar::testing::almeida_m15()));
+    pt.n_dir = 4;
+    StderrCapture err;
+    pt.call();
+    CHECK(err.text().find("argument NDIR = 4") != std::string::npos);
+    CHECK(pt.out_statev[slot::status] == -1);
+  }
+}
+
+TEST_CASE("UINTER: props(15) selects the scheme, the implicit one by default", "[uinter]") {
+  // Same increment with the default (implicit) and with props(15) = 3: identical.
+  auto run = [](std::vector<double> props) {
+    Point pt(3, std::move(props));
+    double r[3] = {0, 0, 0};
+    const double target[3] = {0.5 / 209.9, 0.02, 0.0};
+    drive(pt, r, target, 8);
+    return pt.statev;
+  };
+  const std::vector<double> by_default = run(paper_props(mortar::testing::van_der_pluijm(-0.5)));
+  std::vector<double> props = paper_props(mortar::testing::van_der_pluijm(-0.5), 15);
+  props[14] = 3;
+  CHECK(run(props) == by_default);
+  props[14] = 1;
+  CHECK(run(props) != by_default);
+}
