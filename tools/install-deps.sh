@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages the project needs, when any is missing.
+# Extra packages a script needs may be named as arguments
+# (tools/fuzz.sh: bash tools/install-deps.sh clang libclang-rt-14-dev).
 set -euo pipefail
-packages=(cmake g++ gfortran make libeigen3-dev catch2 libcli11-dev libtoml11-dev gnuplot-nox)
+packages=(cmake g++ gfortran make libeigen3-dev catch2 libcli11-dev libtoml11-dev gnuplot-nox "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

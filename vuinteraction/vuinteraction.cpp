@@ -180,6 +180,28 @@ Vec3 separation_increment(const Block& b, int k, const Real* st, const mortar::S
   return Vec3((reference - penetration) - s.separation[0], double(dd[1]), b.n_dir > 2 ? double(dd[2]) : 0.0);
 }
 
+// The adapter's own slots obey their rules: the open flag (SDV 15) and the
+// initialised flag (SDV 23) are 0 or 1. The law reads the open flag as a
+// bool, so a corrupted 0.5 or NaN would silently become "open".
+bool flags_valid(const Real* st) {
+  auto flag = [](Real x) { return x == Real(0) || x == Real(1); };
+  return flag(st[slot::open]) && flag(st[slot::initialised]);
+}
+
+// A point that is not integrated: its start state (the caller's array,
+// untouched but for the status), its stress and sed as they came in.
+int reject_point(const Block& b, int k, mortar::Failure failure) {
+  b.state_of(k)[slot::status] = Real(static_cast<int>(failure));
+  keep_start_outputs(b, k);
+  return static_cast<int>(failure);
+}
+
+bool all_finite(const Real* a, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(double(a[i]))) return false;
+  return true;
+}
+
 // Integrates point k and writes its outputs. Returns the law's Failure code.
 int integrate_point(const Setup& setup, const Block& b, int k) {
   if (b.penetration_of(k) <= kUnpairedPenetration) {  // no opposite surface: no interaction
@@ -188,21 +210,42 @@ int integrate_point(const Setup& setup, const Block& b, int k) {
     return 0;
   }
   Real* st = b.state_of(k);
+  if (!flags_valid(st)) return reject_point(b, k, mortar::Failure::invalid_state);
   mortar::State s;
   mortar::load_state(st, s);
   const bool first = st[slot::initialised] == Real(0);
   const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, separation_increment(b, k, st, s));
-  mortar::store_state(s, st);
-  if (first && r.status.ok()) {
-    st[slot::reference_penetration] = Real(b.penetration_of(k));
-    st[slot::initialised] = Real(1);
+  if (!r.status.ok()) {  // the law kept the start state; only the counts and status change
+    st[slot::substeps_accepted] = Real(s.substeps_accepted);
+    st[slot::substeps_rejected] = Real(s.substeps_rejected);
+    st[slot::status] = Real(s.status);
+    Real* stress = b.stress_of(k);
+    stress[0] = Real(-r.traction[0]);
+    for (int i = 1; i < b.n_dir; ++i) stress[i] = Real(setup.shear_sign * r.traction[i]);
+    write_energies(b, k, r.elastic_energy, 0.0);
+    if (!all_finite(stress, b.n_dir) || !std::isfinite(double(b.sed[k]))) keep_start_outputs(b, k);
+    return static_cast<int>(r.status.failure);
   }
-  Real* stress = b.stress_of(k);
-  stress[0] = Real(-r.traction[0]);
-  for (int i = 1; i < b.n_dir; ++i) stress[i] = Real(setup.shear_sign * r.traction[i]);
-  write_energies(b, k, r.elastic_energy,
-                 r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
-  return static_cast<int>(r.status.failure);
+  // The law's result in this routine's precision: a double beyond a float's
+  // range would come back as infinity. Checked before anything is stored.
+  Real end[mortar::kStateCount];
+  std::copy(st, st + mortar::kStateCount, end);
+  mortar::store_state(s, end);
+  if (first) {
+    end[slot::reference_penetration] = Real(b.penetration_of(k));
+    end[slot::initialised] = Real(1);
+  }
+  Real stress_end[3] = {Real(-r.traction[0]), Real(setup.shear_sign * r.traction[1]),
+                        Real(setup.shear_sign * r.traction[2])};
+  const Real sed = Real(r.elastic_energy);
+  const Real spd = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+  if (!all_finite(end, mortar::kStateCount) || !all_finite(stress_end, b.n_dir) || !std::isfinite(double(sed)) ||
+      !std::isfinite(double(spd)))
+    return reject_point(b, k, mortar::Failure::non_finite_result);
+  std::copy(end, end + mortar::kStateCount, st);
+  std::copy(stress_end, stress_end + b.n_dir, b.stress_of(k));
+  write_energies(b, k, double(sed), double(spd));
+  return 0;
 }
 
 // Integrates every point; reports the failed ones. Returns how many failed.

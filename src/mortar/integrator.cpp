@@ -51,7 +51,11 @@ const char* check_state(const State& s) {
   if (!(s.dn >= 0 && s.dn <= 1)) return "damage d_n (SDV 10) must lie in [0, 1]";
   if (!(s.ds >= 0 && s.ds <= 1)) return "damage d_s (SDV 11) must lie in [0, 1]";
   if (!(s.wI >= 0)) return "work w_I (SDV 7) must be >= 0";
+  // A negative w_II would raise the strength above its initial value (s > 1, Eq. 4).
+  if (!(s.wII >= 0)) return "work w_II (SDV 8) must be >= 0";
   if (!(s.wIII >= 0)) return "work w_III (SDV 9) must be >= 0";
+  // The damage dissipation only grows from 0 (docs/model.md, energy booking).
+  if (!(s.dissipation_damage >= 0)) return "damage dissipation (SDV 17) must be >= 0";
   return nullptr;
 }
 
@@ -646,6 +650,12 @@ struct Stepper {
 
   int substeps() const { return st.substeps_accepted + st.substeps_rejected; }
 
+  // Further outside the surface than a substep may end before the drift
+  // correction: 1e-3 of the traction scale (the larger of |sigma| and ft0).
+  bool far_outside(const Point& Q) const {
+    return yield_of(M, Q) > 1e-3 * std::max(Q.sigma.norm(), M.p.ft0);
+  }
+
   // Plastic substepping over the separation increment d, starting on the
   // surface. Returns the fraction of d done: 1, or less when the regime
   // switched inside (the point is then on the regime boundary).
@@ -659,8 +669,8 @@ struct Stepper {
     Bracket cut;
     // Every pass of the loop counts against the budget, so no path through
     // it (cuts, relaxations) can spin forever.
-    for (int pass = 0; T < 1; ++pass) {
-      if (substeps() >= c.max_substeps || pass >= 4 * c.max_substeps) {
+    for (long pass = 0; T < 1; ++pass) {
+      if (substeps() >= c.max_substeps || pass >= 4L * c.max_substeps) {
         st.failure = Failure::too_many_substeps;
         return T;
       }
@@ -725,10 +735,21 @@ struct Stepper {
       }
       cuts = 0;
       cut = Bracket{};
-      const Vec3 e_start = P.y.elastic_separation();
-      P = N;
-      if (switch_here) P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
-      settle(M, P, e_start);
+      Point Q = N;
+      if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
+      settle(M, Q, P.y.elastic_separation());
+      // A Heun substep that ends far outside the surface (an open, damaged
+      // joint: the two stages straddle a kink of the flow) is not what the
+      // drift correction is for: correcting it can push sigma_n through zero,
+      // which the secant damage rule reads as complete normal damage. Such a
+      // substep is rejected and halved (docs/robustness.md, defect 8).
+      if (heun && !switch_here && dT > c.min_substep && far_outside(Q)) {
+        dT = std::max(0.5 * dT, c.min_substep);
+        last_rejected = true;
+        ++st.substeps_rejected;
+        continue;
+      }
+      P = Q;
       // Not at a switch: the drift correction's plastic displacement would
       // move the point off the boundary again; the switch re-derives the
       // traction in the new regime and returns it to the surface if needed.
@@ -762,8 +783,8 @@ struct Stepper {
     double T = 0, dT = 1;
     int cuts = 0;
     Bracket cut;
-    for (int pass = 0; T < 1; ++pass) {
-      if (substeps() >= c.max_substeps || pass >= 4 * c.max_substeps) {
+    for (long pass = 0; T < 1; ++pass) {
+      if (substeps() >= c.max_substeps || pass >= 4L * c.max_substeps) {
         st.failure = Failure::too_many_substeps;
         return T;
       }
@@ -1024,8 +1045,13 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d,
     state.status = static_cast<int>(f);
     state.substeps_accepted = st.substeps_accepted;
     state.substeps_rejected = st.substeps_rejected;
-    res.traction = check_state(state) ? Vec3::Zero() : traction_of(M, state);
-    res.elastic_energy = check_state(state) ? 0.0 : elastic_energy(M, state);
+    // The start values, when they are finite (a state that obeys every rule
+    // can still hold separations whose traction or energy overflows).
+    const bool valid = check_state(state) == nullptr;
+    const Vec3 sigma0 = valid ? traction_of(M, state) : Vec3::Zero();
+    const double energy0 = valid ? elastic_energy(M, state) : 0.0;
+    res.traction = sigma0.allFinite() ? sigma0 : Vec3::Zero();
+    res.elastic_energy = std::isfinite(energy0) ? energy0 : 0.0;
     if (tangent) {
       // The secant of the start state: finite, and the stiffness a solver
       // that cuts the increment back will meet first.
@@ -1072,7 +1098,19 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d,
     P.y.separation = sep_end;
     P.sigma = traction_of(M, P.y);
   }
+  // Eq. 8 on the fully softened cone (s = 0) is |tau| - <-sigma_n> tan(phi)
+  // = 0 up to round-off, which can leave w_II a few ulps below zero; w_II no
+  // longer affects the strength there, and check_state() requires w_II >= 0.
+  if (P.y.wII < 0) P.y.wII = 0;
   if (!finite(P.y) || !P.sigma.allFinite()) return fail(Failure::non_finite_result);
+  // Finite separations can still give an elastic energy or a dissipation
+  // increment beyond double's range (increments near 1e155 mm).
+  const double energy_end = elastic_energy(M, P.y);
+  const double d_plastic = P.y.dissipation_plastic - state.dissipation_plastic;
+  const double d_damage = P.y.dissipation_damage - state.dissipation_damage;
+  const double d_unilateral = P.y.energy_unilateral - state.energy_unilateral;
+  if (!std::isfinite(energy_end) || !std::isfinite(d_plastic + d_damage + d_unilateral))
+    return fail(Failure::non_finite_result);
 
   if (tangent) {
     if (step.sens) {
@@ -1085,15 +1123,15 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d,
     }
     if (!tangent->allFinite()) return fail(Failure::non_finite_result);
   }
-  res.d_dissipation_plastic = P.y.dissipation_plastic - state.dissipation_plastic;
-  res.d_dissipation_damage = P.y.dissipation_damage - state.dissipation_damage;
-  res.d_energy_unilateral = P.y.energy_unilateral - state.energy_unilateral;
+  res.d_dissipation_plastic = d_plastic;
+  res.d_dissipation_damage = d_damage;
+  res.d_energy_unilateral = d_unilateral;
   P.y.substeps_accepted = st.substeps_accepted;
   P.y.substeps_rejected = st.substeps_rejected;
   P.y.status = 0;
   state = P.y;
   res.traction = P.sigma;
-  res.elastic_energy = elastic_energy(M, state);
+  res.elastic_energy = energy_end;
   return res;
 }
 

@@ -17,7 +17,7 @@ enum class Failure : int {
   too_many_switches = 3,     // more open/closed switches in one increment than allowed
   non_finite_increment = 4,  // the separation increment holds NaN or infinity
   invalid_state = 5,         // the incoming state breaks a rule (see check_state)
-  non_finite_result = 6,     // a guard: never returned, the start state is kept instead
+  non_finite_result = 6,     // a result (traction, energy, state) beyond the floating-point range: start state kept
   local_solve_failed = 7,    // implicit scheme: Newton failed at the smallest plastic substep
 };
 const char* failure_name(Failure f);

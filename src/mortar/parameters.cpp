@@ -140,7 +140,8 @@ ValidationError read_props(const double* props, int n_props, Parameters& p, Cont
   if (double v = opt(15); v != 0) c.stol = v;
   if (double v = opt(16); v != 0) c.ftol = v;
   if (double v = opt(17); v != 0) {
-    if (v != std::floor(v) || v > 1e9) return fail(17, "max_substeps", v, "a whole number <= 1e9");
+    if (v != std::floor(v) || !(v >= 1 && v <= 1e9))
+      return fail(17, "max_substeps", v, "a whole number in [1, 1e9]");
     c.max_substeps = static_cast<int>(v);
   }
   if (double v = opt(18); v != 0) c.min_substep = v;

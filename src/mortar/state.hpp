@@ -54,6 +54,16 @@ struct State {
   Vec3 elastic_separation() const { return separation - plastic; }
 };
 
+// A count or status slot (SDV 19-21) as an int. These slots are outputs of
+// the last increment, so garbage in them (a corrupted restart) must not
+// matter; converting a NaN or a value beyond int's range would be undefined
+// behaviour, so such values read as 0.
+template <class Real>
+int int_slot(Real x) {
+  const double v = double(x);
+  return (v >= -2147483648.0 && v <= 2147483647.0) ? int(v) : 0;
+}
+
 // Named mapping between State and the flat array of one point (any precision).
 template <class Real>
 void load_state(const Real* a, State& s) {
@@ -70,9 +80,9 @@ void load_state(const Real* a, State& s) {
   s.dissipation_plastic = double(a[slot::dissipation_plastic]);
   s.dissipation_damage = double(a[slot::dissipation_damage]);
   s.energy_unilateral = double(a[slot::energy_unilateral]);
-  s.substeps_accepted = int(a[slot::substeps_accepted]);
-  s.substeps_rejected = int(a[slot::substeps_rejected]);
-  s.status = int(a[slot::status]);
+  s.substeps_accepted = int_slot(a[slot::substeps_accepted]);
+  s.substeps_rejected = int_slot(a[slot::substeps_rejected]);
+  s.status = int_slot(a[slot::status]);
 }
 
 template <class Real>

@@ -1,0 +1,390 @@
+// Writes the seed corpus of the vuinteraction_ fuzz target (tests/fuzz/corpus):
+// one file per interesting case, in the format of fuzz_input.hpp. The corpus
+// is committed; rerun this after changing the format:
+//   build/tests/fuzz/fuzz_make_seeds tests/fuzz/corpus
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "fuzz_input.hpp"
+
+namespace {
+
+using mj_fuzz::Writer;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// Dimension bytes (inverse of the decode_* functions).
+int enc_dir(int v) { return (v == 2 || v == 3) ? v - 2 : 0x80 | (v + 4); }
+int enc_states(int v) { return (v >= 23 && v <= 30) ? v - 23 : 0x80 | (v + 2); }
+int enc_node_states(int v) { return v == 1 ? 0 : v == 2 ? 0x40 : 0x80 | (v + 1); }
+int enc_block(int v) { return (v >= 1 && v <= 8) ? v - 1 : 0x80 | (v + 2); }
+int enc_props(int v) { return (v >= 14 && v <= 20) ? v - 14 : 0x80 | (v + 1); }
+
+// A value, exactly: special kinds where they apply, else the raw double.
+void value(Writer& w, double x) {
+  if (x == 0) {
+    w.u8(mj_fuzz::kZero);
+  } else if (std::isnan(x)) {
+    w.u8(mj_fuzz::kNaN);
+  } else if (std::isinf(x)) {
+    w.u8(mj_fuzz::kInfinity | (x < 0 ? 0x80 : 0));
+  } else if (x == -1e36) {
+    w.u8(mj_fuzz::kUnpaired);
+  } else {
+    mj_fuzz::write_raw(w, x);
+  }
+}
+// A small increment (mm), in the kind that keeps mutations at the joint's scale.
+void small(Writer& w, double mm) {
+  if (std::abs(mm) <= 1e-4) mj_fuzz::write_smaller(w, mm);
+  else mj_fuzz::write_small(w, mm);
+}
+
+struct Case {
+  int n_dir = 3, n_states = 23, n_node_states = 1, n_block = 1, n_props = 14, n_nod_slv = 1;
+  int props_mode = 0, paper = 0;                  // modes 0 and 3
+  std::vector<int> control_bytes;                 // props(15..nProps), modes 0, 1, 3
+  std::vector<double> raw_props;                  // mode 2
+  std::vector<int> payload;                       // mode 1 (u16 each) or mode 3 (i8 each)
+  std::vector<std::pair<int, double>> overrides;  // up to 3
+  bool start_values = false;
+  double start_stress = 0, start_sed = 0;
+};
+
+// One call: corruptions (point, slot, value), then per point the penetration
+// (written by `pen`) and the drDisp components (written by `dd`).
+struct Corruption {
+  int point, slot;
+  double value;
+};
+
+class Seed {
+ public:
+  explicit Seed(const Case& c) : c_(c) {
+    w_.u8(enc_dir(c.n_dir));
+    w_.u8(enc_states(c.n_states));
+    w_.u8(enc_node_states(c.n_node_states));
+    w_.u8(enc_block(c.n_block));
+    w_.u8(enc_props(c.n_props));
+    w_.u8(c.n_nod_slv);
+    w_.u8(c.props_mode);
+    if (c.props_mode == 2) {
+      for (int i = 0; i < c.n_props; ++i) w_.f64(i < int(c.raw_props.size()) ? c.raw_props[i] : 0.0);
+    } else {
+      if (c.props_mode == 1) {
+        // 14 two-byte fractions in Table 1 order, with the switch bytes
+        // of m and n (nonzero: decay present) where random_valid_set reads them.
+        const int order[14] = {0, 1, 2, 6, 7, 3, 4, 5, 8, 9, 10, 11, 12, 13};
+        for (int j = 0; j < 14; ++j) {
+          if (order[j] == 8 || order[j] == 11) w_.u8(1);
+          w_.i16(c.payload[order[j]]);
+        }
+      } else {
+        w_.u8(c.paper);
+        if (c.props_mode == 3)
+          for (int v : c.payload) w_.u8(v);
+      }
+      for (int i = 14; i < c.n_props; ++i) {
+        const int b = i - 14 < int(c.control_bytes.size()) ? c.control_bytes[i - 14] : 0;
+        w_.u8(b);
+      }
+    }
+    w_.u8(int(c.overrides.size()));
+    for (const auto& [index, v] : c.overrides) {
+      w_.u8(index);
+      w_.f64(v);
+    }
+    w_.u8(c.start_values ? 1 : 0);
+    if (c.start_values) {
+      for (int i = 0; i < c.n_dir * c.n_block; ++i) value(w_, c.start_stress);
+      for (int i = 0; i < c.n_block; ++i) value(w_, c.start_sed);
+    }
+  }
+  // Calls are appended by `call`; the count byte is written by `bytes`.
+  template <class Points>
+  void call(const std::vector<Corruption>& corruptions, Points points) {
+    Writer w;
+    w.u8(int(corruptions.size()));
+    for (const Corruption& x : corruptions) {
+      w.u8(x.point);
+      w.u8(x.slot);
+      value(w, x.value);
+    }
+    for (int k = 0; k < std::max(c_.n_block, 0); ++k) points(w, k);
+    calls_.push_back(w.bytes);
+  }
+  std::vector<uint8_t> bytes() const {
+    std::vector<uint8_t> out = w_.bytes;
+    out.push_back(uint8_t(calls_.size() - 1));
+    for (const auto& c : calls_) out.insert(out.end(), c.begin(), c.end());
+    return out;
+  }
+
+ private:
+  Case c_;
+  Writer w_;
+  std::vector<std::vector<uint8_t>> calls_;
+};
+
+std::string out_dir;
+int written = 0;
+
+void save(const std::string& name, const Seed& s) {
+  const std::vector<uint8_t> b = s.bytes();
+  std::ofstream(out_dir + "/" + name, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), b.size());
+  ++written;
+}
+
+// A whole path for one point, from (penetration delta, slip1, slip2) per call.
+struct Step {
+  double dpen, s1, s2;
+};
+void path_seed(const std::string& name, const Case& c, const std::vector<Step>& steps,
+               std::vector<std::vector<Corruption>> corruptions = {}) {
+  Seed s(c);
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const Step st = steps[i];
+    s.call(i < corruptions.size() ? corruptions[i] : std::vector<Corruption>{}, [&](Writer& w, int k) {
+      const double scale = 1.0 + 0.25 * k;
+      small(w, st.dpen * scale);
+      w.u8(mj_fuzz::kZero);  // drDisp(1) is not read
+      for (int i = 1; i < c.n_dir; ++i) small(w, (i == 1 ? st.s1 : st.s2) * scale);
+    });
+  }
+  save(name, s);
+}
+
+std::vector<Step> opening(int n, double step) {
+  std::vector<Step> v{{0, 0, 0}};
+  for (int i = 1; i < n; ++i) v.push_back({-step, 0, 0});
+  return v;
+}
+std::vector<Step> pressed_shear(int n, double press, double slip) {
+  std::vector<Step> v{{0, 0, 0}, {press, 0, 0}};
+  for (int i = 2; i < n; ++i) v.push_back({0, slip, 0.3 * slip});
+  return v;
+}
+std::vector<Step> open_close(int n, double amp) {
+  std::vector<Step> v{{0, 0, 0}};
+  for (int i = 1; i < n; ++i) v.push_back({(i % 4 < 2 ? -amp : amp) * (i % 2 ? 1.0 : 0.5), 0.2 * amp, 0});
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: fuzz_make_seeds <corpus-directory>\n");
+    return 2;
+  }
+  out_dir = argv[1];
+
+  // --- Valid paths: the law's regimes through the ABI.
+  {
+    Case c;
+    path_seed("valid-m15-3d-opening-to-separation", c, opening(8, 0.004));
+    c.paper = 1;
+    path_seed("valid-m34-3d-pressed-shear", c, pressed_shear(8, 0.0007, 0.004));
+    c.paper = 2;
+    c.n_dir = 2;
+    c.n_block = 4;
+    path_seed("valid-vdp-2d-open-close-4-points", c, open_close(8, 0.003));
+    c.paper = 3;
+    c.n_dir = 3;
+    c.n_block = 8;
+    path_seed("valid-atkinson-8-points-open-close-shear", c, open_close(8, 0.001));
+  }
+  {
+    Case c;  // a random valid set from 2-byte payloads, snap-back likely (large ft0, small GIC)
+    c.props_mode = 1;
+    // kn ks ft0 c0 GIC GIIC phi0 phir m psi0 psir n bn bs (fractions of 65535)
+    c.payload = {30000, 30000, 60000, 20000, 1000, 30000, 30000, 40000, 100, 30000, 100, 100, 30000, 30000};
+    c.n_block = 3;
+    path_seed("valid-random-set-snapback", c, open_close(8, 0.01));
+    c.payload = {10000, 50000, 10000, 65000, 50000, 60000, 65535, 65535, 1, 65000, 65535, 1, 0, 65535};
+    path_seed("valid-random-set-steep-angles", c, pressed_shear(8, 0.01, 0.01));
+  }
+  {
+    Case c;  // scaled paper set
+    c.props_mode = 3;
+    c.payload = {16, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+    path_seed("valid-scaled-stiff-joint", c, pressed_shear(6, 0.0001, 0.001));
+  }
+  {
+    Case c;  // controls: forward Euler, STOL 1e-3, shear sign +1
+    c.n_props = 20;
+    c.control_bytes = {2, 4, 0, 0, 0, 1};
+    path_seed("valid-controls-forward-euler-sign-plus", c, pressed_shear(8, 0.0007, 0.004));
+    c.control_bytes = {1, 1, 1, 0, 2, 2};  // STOL 1e-12, FTOL 1e-12, min substep 1e-12
+    path_seed("valid-controls-tight-tolerances", c, opening(3, 0.003));
+    c.control_bytes = {1, 3, 3, 1, 5, 0};  // one substep at most, min substep 1
+    path_seed("valid-controls-one-substep", c, pressed_shear(6, 0.0007, 0.004));
+    c.control_bytes = {1, 3, 3, 4, 0, 0};  // max substeps 1e9 (the largest allowed)
+    path_seed("valid-controls-max-substeps-1e9", c, pressed_shear(6, 0.0007, 0.004));
+    c.n_props = 30;  // entries beyond props(20) are ignored
+    c.control_bytes = {0, 0, 0, 0, 0, 0, 3, 3, 2, 0x80};
+    path_seed("valid-30-props-extra-entries-ignored", c, opening(4, 0.002));
+  }
+  {
+    Case c;  // wider arrays: 30 state variables, 2 node states: only state(1:23,1,k) may change
+    c.n_states = 30;
+    c.n_node_states = 2;
+    c.n_block = 3;
+    path_seed("valid-30-states-2-node-states", c, open_close(6, 0.003));
+    c.n_nod_slv = 0;
+    path_seed("valid-no-slave-node-numbers", c, opening(3, 0.003));
+  }
+
+  // --- Invalid arguments: reported, outputs finite.
+  for (int d : {1, 4, 0, -1, -4, 11}) {
+    Case c;
+    c.n_dir = d;
+    c.start_values = true;
+    c.start_stress = kNaN;
+    c.start_sed = kInf;
+    path_seed("invalid-nDir-" + std::to_string(d), c, opening(2, 0.001));
+  }
+  for (int n : {22, 21, 20, 10, 0, -2}) {
+    Case c;
+    c.n_states = n;
+    path_seed("invalid-nStates-" + std::to_string(n), c, opening(2, 0.001));
+  }
+  for (int n : {13, 0, -1}) {
+    Case c;
+    c.n_props = n;
+    path_seed("invalid-nProps-" + std::to_string(n), c, opening(2, 0.001));
+  }
+  for (int n : {0, -1}) {
+    Case c;
+    c.n_node_states = n;
+    path_seed("invalid-nNodState-" + std::to_string(n), c, opening(2, 0.001));
+  }
+  for (int n : {0, -1}) {
+    Case c;
+    c.n_block = n;
+    path_seed("edge-nBlock-" + std::to_string(n), c, opening(2, 0.001));
+  }
+
+  // --- Invalid properties and controls.
+  struct Bad {
+    const char* name;
+    int index;
+    double value;
+  };
+  const Bad bad[] = {
+      {"kn-nan", 0, kNaN},           {"kn-zero", 0, 0},           {"ks-negative", 1, -1},
+      {"ft0-inf", 2, kInf},          {"c0-below-hyperbola", 3, 0.5}, {"GIC-zero", 4, 0},
+      {"phi0-90", 6, 90},            {"phir-above-phi0", 7, 45},  {"phir-zero", 7, 0},
+      {"m-negative", 8, -1},         {"psir-above-psi0", 10, 9},  {"bn-negative", 12, -1e-300},
+      {"scheme-3", 14, 3},           {"stol-2", 15, 2},           {"ftol-negative", 16, -1e-8},
+      {"max-substeps-fraction", 17, 1.5}, {"max-substeps-2e9", 17, 2e9},
+      {"max-substeps-minus-1e300", 17, -1e300}, {"min-substep-1.5", 18, 1.5},
+      {"shear-sign-half", 19, 0.5},  {"control-nan", 16, kNaN},
+  };
+  for (const Bad& b : bad) {
+    Case c;
+    c.n_props = 20;
+    c.overrides = {{b.index, b.value}};
+    c.start_values = true;
+    c.start_stress = 0.25;
+    c.start_sed = kNaN;
+    path_seed(std::string("invalid-prop-") + b.name, c, opening(2, 0.001));
+  }
+  {
+    Case c;  // raw props: whatever bits
+    c.props_mode = 2;
+    c.n_props = 16;
+    c.raw_props = {741.1, 308.8, 1.78, 2.67, 0.01209, 0.121, 40, 32, 511.9, 8, 0, 856.1, 10, 3, 1, 1e-6};
+    path_seed("valid-raw-props", c, pressed_shear(4, 0.0005, 0.002));
+    c.raw_props[5] = -0.0;
+    path_seed("invalid-raw-props-negative-zero", c, opening(2, 0.001));
+    c.raw_props = {1e308, 1e308, 1e-308, 1e308, 1e-308, 1e308, 89.999999, 1e-300, 1e308, 89.99, 0, 1e308, 1e308, 0};
+    path_seed("valid-raw-props-extreme", c, pressed_shear(4, 0.0005, 0.002));
+  }
+
+  // --- Increments: tiny, huge, non-finite, unpaired.
+  {
+    Case c;
+    c.n_block = 2;
+    auto special = [&](const std::string& name, double pen_later, double slip_later) {
+      Seed s(c);
+      s.call({}, [&](Writer& w, int) {
+        w.u8(mj_fuzz::kZero);
+        for (int i = 0; i < 3; ++i) w.u8(mj_fuzz::kZero);
+      });
+      for (int n = 0; n < 3; ++n)
+        s.call({}, [&](Writer& w, int k) {
+          value(w, k == 0 ? pen_later : 1e-4);
+          w.u8(mj_fuzz::kZero);
+          value(w, k == 0 ? slip_later : 1e-4);
+          value(w, 0.0);
+        });
+      save(name, s);
+    };
+    special("increment-tiny-1e-300", 1e-300, 1e-300);
+    special("increment-denormal", 4.9e-324, -4.9e-324);
+    special("increment-huge-opening-1e300", -1e300, 0);
+    special("increment-huge-pressure-1e155", 1e155, 0);
+    special("increment-huge-pressure-1e100", 1e100, 1e100);
+    special("increment-huge-shear-1e200", 1e-4, 1e200);
+    special("increment-large-opening-1e3", -1e3, 1e3);
+    special("increment-nan-penetration", kNaN, 0);
+    special("increment-inf-penetration", kInf, 0);
+    special("increment-minus-inf-penetration", -kInf, 0);
+    special("increment-nan-slip", 1e-4, kNaN);
+    special("increment-inf-slip", 1e-4, -kInf);
+    special("increment-unpaired", -1e36, 0);
+  }
+  {
+    Case c;  // NaN penetration at the very first call, then a good one
+    Seed s(c);
+    s.call({}, [](Writer& w, int) {
+      w.u8(mj_fuzz::kNaN);
+      for (int i = 0; i < 3; ++i) w.u8(mj_fuzz::kZero);
+    });
+    s.call({}, [](Writer& w, int) {
+      small(w, 0.001);
+      for (int i = 0; i < 3; ++i) w.u8(mj_fuzz::kZero);
+    });
+    save("increment-nan-first-call", s);
+  }
+
+  // --- Corrupted state (restart garbage) on a point with history.
+  struct Garbage {
+    const char* name;
+    int slot;  // 0-based
+    double value;
+  };
+  const Garbage garbage[] = {
+      {"damage-n-1.5", 9, 1.5},          {"damage-s-negative", 10, -0.1},   {"wI-negative", 6, -1},
+      {"wII-negative", 7, -1},           {"wIII-negative", 8, -1e-3},       {"plastic-nan", 0, kNaN},
+      {"crack-inf", 4, kInf},            {"separation-nan", 12, kNaN},      {"separation-huge", 11, 1e300},
+      {"dissipation-plastic-nan", 15, kNaN}, {"dissipation-damage-negative", 16, -1},
+      {"unilateral-inf", 17, -kInf},     {"substeps-nan", 18, kNaN},        {"substeps-1e300", 19, 1e300},
+      {"status-nan", 20, kNaN},          {"status-minus-1e20", 20, -1e20},  {"open-nan", 14, kNaN},
+      {"open-half", 14, 0.5},            {"open-2", 14, 2},                 {"reference-nan", 21, kNaN},
+      {"reference-inf", 21, kInf},       {"initialised-nan", 22, kNaN},     {"initialised-half", 22, 0.5},
+      {"initialised-0-on-used-state", 22, 0},
+  };
+  for (const Garbage& g : garbage) {
+    Case c;
+    c.n_block = 2;
+    std::vector<std::vector<Corruption>> corr(8);
+    corr[5] = {{0, g.slot, g.value}};
+    path_seed(std::string("corrupt-") + g.name, c, pressed_shear(8, -0.001, 0.004), corr);
+  }
+  {
+    Case c;  // a whole restart of garbage on a fresh point
+    std::vector<std::vector<Corruption>> corr(3);
+    for (int i = 0; i < 23; ++i) corr[0].push_back({0, i, i % 3 == 0 ? kNaN : -1e10 * (i + 1)});
+    corr[0].resize(3);
+    path_seed("corrupt-fresh-point-garbage", c, opening(3, 0.001), corr);
+  }
+
+  std::printf("fuzz_make_seeds: wrote %d seeds to %s\n", written, out_dir.c_str());
+  return 0;
+}

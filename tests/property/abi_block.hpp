@@ -1,0 +1,203 @@
+// A caller of vuinteraction_ (double precision, standalone build) for the
+// property tests: a block of points with its arrays, called as Abaqus/Explicit
+// calls it, plus random valid parameter sets and loading paths (fixed seeds).
+#pragma once
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mortar/integrator.hpp"
+#include "mortar/surface.hpp"
+#include "vuinteraction.h"
+
+static_assert(sizeof(mj_real) == sizeof(double), "the property tests call the double-precision routine");
+
+namespace mj_property {
+
+namespace slot = mortar::slot;
+constexpr int kStates = mortar::kStateCount;
+
+// One VUINTERACTION block: nBlock points, one node state each.
+struct Block {
+  int n_block, n_dir, n_states = kStates, n_props;
+  std::vector<double> stress, flux_slv, flux_mst, state, sed, sfd, scd, spd, svd;
+  std::vector<double> props, penetration, dr_disp;
+  std::vector<int> slave_nodes;
+
+  Block(int block, int dir, std::vector<double> p)
+      : n_block(block), n_dir(dir), n_props(int(p.size())), stress(size_t(dir) * block), flux_slv(block),
+        flux_mst(block), state(size_t(kStates) * block), sed(block), sfd(block), scd(block), spd(block),
+        svd(block), props(std::move(p)), penetration(block), dr_disp(size_t(dir) * block), slave_nodes(block) {
+    for (int k = 0; k < block; ++k) slave_nodes[k] = 1001 + k;
+  }
+
+  double* state_of(int k) { return &state[size_t(k) * kStates]; }
+  const double* state_of(int k) const { return &state[size_t(k) * kStates]; }
+  double* stress_of(int k) { return &stress[size_t(k) * n_dir]; }
+  const double* stress_of(int k) const { return &stress[size_t(k) * n_dir]; }
+
+  void call() {
+    const int n_nod_slv = 1, n_nod_mst = 4, n_temp = 0, n_fields = 1, n_node_states = 1;
+    const int flags[3] = {1, 1, 0};
+    const double r_data[4] = {0, 0, 1e-6, 0};
+    const size_t n = size_t(n_block), d = size_t(n_dir);
+    std::vector<int> master_nodes(4 * n, 0);
+    std::vector<double> d_rot(4 * n), dircos(d * d * n), per_point(n), dircos_sl(d * n), shape_slv(n),
+        shape_mst(4 * n), coord_slv(d * n), coord_mst(4 * d * n), field(n);
+    char name[80], blank[80];
+    std::memset(name, ' ', sizeof name);
+    std::memset(blank, ' ', sizeof blank);
+    std::memcpy(name, "PROPERTY", 8);
+    vuinteraction_(stress.data(), flux_slv.data(), flux_mst.data(), state.data(), sed.data(), sfd.data(),
+                   scd.data(), spd.data(), svd.data(), &n_block, &n_block, &n_block, &n_node_states, &n_nod_slv,
+                   &n_nod_mst, &n_dir, &n_states, &n_props, &n_temp, &n_fields, flags, r_data, name, blank, blank,
+                   slave_nodes.data(), master_nodes.data(), props.data(), penetration.data(), dr_disp.data(),
+                   d_rot.data(), dircos.data(), per_point.data(), per_point.data(), per_point.data(),
+                   dircos_sl.data(), shape_slv.data(), shape_mst.data(), coord_slv.data(), coord_mst.data(),
+                   coord_slv.data(), coord_mst.data(), per_point.data(), per_point.data(), field.data(),
+                   field.data(), 80, 80, 80);
+  }
+};
+
+// Captures what is written to file descriptor 2 while it lives.
+class StderrCapture {
+ public:
+  StderrCapture() : file_(std::tmpfile()), saved_(dup(2)) {
+    std::fflush(stderr);
+    dup2(fileno(file_), 2);
+  }
+  ~StderrCapture() {
+    std::fflush(stderr);
+    dup2(saved_, 2);
+    close(saved_);
+    std::fclose(file_);
+  }
+  StderrCapture(const StderrCapture&) = delete;
+  StderrCapture& operator=(const StderrCapture&) = delete;
+  std::string text() {
+    std::fflush(stderr);
+    std::string out;
+    std::rewind(file_);
+    for (int c; (c = std::fgetc(file_)) != EOF;) out += char(c);
+    return out;
+  }
+
+ private:
+  std::FILE* file_;
+  int saved_;
+};
+
+// The number of parameter sets a test runs: n, times MJ_PROPERTY_SCALE when
+// that is set to a number in (0, 1] (tools/sanitize.sh runs the property
+// tests under the sanitizers at a quarter of their size; every path is
+// still checked the same way).
+inline int scaled(int n) {
+  static const double scale = [] {
+    const char* v = std::getenv("MJ_PROPERTY_SCALE");
+    const double x = v ? std::atof(v) : 1.0;
+    return (x > 0 && x <= 1) ? x : 1.0;
+  }();
+  return std::max(1, int(std::lround(n * scale)));
+}
+
+inline double log_uniform(std::mt19937& rng, double lo, double hi) {
+  return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng));
+}
+inline double uniform(std::mt19937& rng, double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng);
+}
+
+// A random valid parameter set over and beyond Table 1 (snap-back included:
+// ft0^2/GIC up to several kn), as props(1..14).
+inline mortar::Parameters random_parameters(std::mt19937& rng) {
+  mortar::Parameters p;
+  p.kn = log_uniform(rng, 20, 5000);
+  p.ks = p.kn * uniform(rng, 0.2, 0.8);
+  p.ft0 = log_uniform(rng, 0.05, 3);
+  p.phi0 = uniform(rng, 20, 50);
+  p.phir = p.phi0 * uniform(rng, 0.6, 1.0);
+  p.c0 = p.ft0 * std::tan(p.phi0 * M_PI / 180) * uniform(rng, 1.05, 4);
+  p.GIC = log_uniform(rng, 1e-4, 0.05);
+  p.GIIC = p.GIC * uniform(rng, 2, 25);
+  p.m = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
+  p.psi0 = uniform(rng, 0, 35);
+  p.psir = p.psi0 * uniform(rng, 0, 1);
+  p.n = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
+  p.bn = uniform(rng, 0, 15);
+  p.bs = uniform(rng, 0, 6);
+  return p;
+}
+
+// props(1..14), then props(15) = scheme when not the default.
+inline std::vector<double> props_of(const mortar::Parameters& p, mortar::Scheme scheme = mortar::Scheme::modified_euler) {
+  std::vector<double> props(scheme == mortar::Scheme::modified_euler ? 14 : 15, 0.0);
+  for (int i = 0; i < 14; ++i) props[i] = mortar::parameter_at(p, i);
+  if (props.size() > 14) props[14] = double(static_cast<int>(scheme));
+  return props;
+}
+
+// One increment of a loading path in Abaqus terms: the change of the
+// penetration and the slip increments drDisp(2..3).
+struct Step {
+  double d_penetration, slip1, slip2;
+};
+
+// Path families, scaled to the joint (un = ft0/kn, us = c0/ks: the elastic
+// limits). `modest` keeps every increment within a fraction of the elastic
+// limit (for the trapezoidal energy check); otherwise anything from tiny to
+// many elastic limits, with reversals, opening-closing, jumps across the apex.
+inline Step random_step(std::mt19937& rng, const mortar::Parameters& p, int family, bool modest) {
+  const double un = p.ft0 / p.kn, us = p.c0 / p.ks;
+  const double f = modest ? 0.1 : 1.0;
+  switch (family % 5) {
+    case 0:  // opening and closing, little shear
+      return {-f * uniform(rng, -3, 3.3) * un, f * uniform(rng, -0.1, 0.1) * us, 0};
+    case 1:  // shear reversals under a wandering pressure
+      return {f * uniform(rng, -0.2, 0.25) * un, f * uniform(rng, -4, 4) * us, f * uniform(rng, -1, 1) * us};
+    case 2:  // pressed, then sheared one way
+      return {f * uniform(rng, -0.05, 0.15) * un, f * uniform(rng, 0, 2) * us, f * uniform(rng, -0.2, 0.2) * us};
+    case 3:  // opening while sliding
+      return {-f * uniform(rng, -0.5, 2) * un, f * uniform(rng, -2, 3) * us, f * uniform(rng, -2, 2) * us};
+    default:  // anything, tiny to large
+      if (modest) return {f * uniform(rng, -1, 1) * un, f * uniform(rng, -1, 1) * us, f * uniform(rng, -1, 1) * us};
+      return {log_uniform(rng, 1e-12, 40) * un * (uniform(rng, 0, 1) < 0.5 ? -1 : 1),
+              log_uniform(rng, 1e-12, 40) * us * (uniform(rng, 0, 1) < 0.5 ? -1 : 1),
+              uniform(rng, 0, 1) < 0.5 ? 0.0 : log_uniform(rng, 1e-12, 10) * us};
+  }
+}
+
+// Applies the step of point k to the block's inputs (the first call of a
+// point defines its zero: it has no increment).
+inline void apply(Block& b, int k, const Step& s) {
+  b.penetration[k] += s.d_penetration;
+  double* dd = &b.dr_disp[size_t(k) * b.n_dir];
+  dd[0] = -s.d_penetration;
+  dd[1] = s.slip1;
+  if (b.n_dir == 3) dd[2] = s.slip2;
+}
+
+// The law's view of point k after a call: traction in law signs (sigma_n > 0
+// tension; the default shear sign -1) and the state.
+inline mortar::Vec3 law_traction(const Block& b, int k) {
+  const double* s = b.stress_of(k);
+  return mortar::Vec3(-s[0], -s[1], b.n_dir == 3 ? -s[2] : 0.0);
+}
+inline mortar::State law_state(const Block& b, int k) {
+  mortar::State s;
+  mortar::load_state(b.state_of(k), s);
+  return s;
+}
+
+inline bool all_finite(const double* v, size_t n) {
+  return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
+}
+
+}  // namespace mj_property

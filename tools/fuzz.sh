@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Fuzzes the VUINTERACTION entry point vuinteraction_ with libFuzzer (Clang),
+# built with AddressSanitizer + UndefinedBehaviorSanitizer, starting from the
+# committed seed corpus tests/fuzz/corpus (issue 6; docs/robustness.md).
+#
+#   bash tools/fuzz.sh                 60 s on the double-precision routine (CI)
+#   bash tools/fuzz.sh 3600            one hour
+#   bash tools/fuzz.sh 3600 single     the single-precision routine
+#
+# Build directory build-fuzz/. New inputs the fuzzer finds go to
+# build-fuzz/corpus-<precision>/ (the committed seeds are only read); a
+# failing input is written to build-fuzz/artifacts/ and the script exits
+# non-zero. Reproduce one with:
+#   build-fuzz/tests/fuzz/fuzz_vuinteraction_double build-fuzz/artifacts/crash-...
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+precision=${2:-double}
+build=build-fuzz
+
+# libFuzzer is in Debian's compiler-rt package (bookworm: clang 14).
+bash tools/install-deps.sh clang libclang-rt-14-dev
+jobs=$(nproc 2>/dev/null || echo 2)
+
+# -O1 -g and no NDEBUG: assertions (Eigen's included) stay on.
+mkdir -p "$build"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+  -DCMAKE_CXX_COMPILER=clang++ -DMJ_FUZZ=ON -DMJ_SANITIZE=address,undefined > "$build/configure.log" 2>&1 \
+  || { cat "$build/configure.log"; exit 1; }
+cmake --build "$build" -j"$jobs" --target "fuzz_vuinteraction_$precision"
+
+target="$build/tests/fuzz/fuzz_vuinteraction_$precision"
+work="$build/corpus-$precision"
+mkdir -p "$work" "$build/artifacts"
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+flags=(-max_total_time="$seconds" -max_len=4096 -timeout=60 -rss_limit_mb=4096 -print_final_stats=1
+       -artifact_prefix="$build/artifacts/")
+log="$build/fuzz-$precision.log"
+echo "fuzz: $target for $seconds s, corpus $work + tests/fuzz/corpus; log $log"
+"$target" "${flags[@]}" "$work" tests/fuzz/corpus > "$log" 2>&1 || status=$?
+status=${status:-0}
+# Summary: libFuzzer's final statistics and the target's own counts.
+grep -E "^(stat::|fuzz_vuinteraction:|Done [0-9]+ runs|==[0-9]+==ERROR|SUMMARY)|PROPERTY VIOLATED|runtime error" "$log" \
+  | grep -v "^stat::(peak_rss|slowest)" || true
+if [ "$status" -ne 0 ]; then
+  echo "fuzz: FAILED (exit $status); the failing input is in $build/artifacts/; full log: $log"
+  tail -n 60 "$log"
+  exit 1
+fi
+echo "fuzz: passed, $(grep -Eo '^stat::number_of_executed_units: [0-9]+' "$log" | awk '{s+=$2} END {print s+0}') executions in $seconds s"

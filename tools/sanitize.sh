@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The test suite under sanitizers (issue 6; docs/robustness.md).
+#
+#   bash tools/sanitize.sh address   AddressSanitizer + UndefinedBehaviorSanitizer:
+#                                    every test (build-asan/)
+#   bash tools/sanitize.sh thread    ThreadSanitizer: the concurrency tests of the
+#                                    ABI adapters, both precisions (build-tsan/)
+#   bash tools/sanitize.sh           both
+#
+# Built with GCC at -O2 -g without NDEBUG (assertions, Eigen's included, stay
+# on), libstdc++ assertions in the ASan build, and -fno-sanitize-recover=all:
+# any report fails the test that triggered it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/install-deps.sh
+jobs=$(nproc 2>/dev/null || echo 2)
+what=${1:-all}
+
+configure() {  # build-dir sanitizers
+  mkdir -p "$1"
+  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g" \
+    -DCMAKE_Fortran_FLAGS_RELWITHDEBINFO="-O2 -g" -DMJ_SANITIZE="$2" > "$1/configure.log" 2>&1 \
+    || { cat "$1/configure.log"; exit 1; }
+}
+
+if [ "$what" = all ] || [ "$what" = address ]; then
+  configure build-asan address,undefined
+  cmake --build build-asan -j"$jobs"
+  export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1}
+  export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+  # The property tests at a quarter of their parameter sets (tests/property/abi_block.hpp).
+  export MJ_PROPERTY_SCALE=${MJ_PROPERTY_SCALE:-0.25}
+  # Excluded, for time only: "law:Implicit, invariant 10" makes 1.4 million
+  # Catch2 assertions inside its loops, which cost about 10 minutes under
+  # ASan on 2 cores (21 s in the plain build). The implicit scheme on random
+  # paths still runs under ASan + UBSan in the other implicit tests and in the
+  # fuzz target (props(15) = 3). Drop the exclusion once that test tallies
+  # and asserts once, as tests/property does.
+  ctest --test-dir build-asan --output-on-failure -j"$jobs" -E "^law:Implicit, invariant 10:"
+fi
+
+if [ "$what" = all ] || [ "$what" = thread ]; then
+  configure build-tsan thread
+  cmake --build build-tsan -j"$jobs" --target abi_tests_double abi_tests_single
+  export TSAN_OPTIONS=${TSAN_OPTIONS:-halt_on_error=1:second_deadlock_stack=1}
+  for precision in double single; do
+    # Every test tagged [threads] ("concurrent calls on disjoint blocks give the
+    # single-thread results"); -w NoTests fails if the tag matches nothing.
+    echo "tsan: abi_tests_$precision [threads]"
+    build-tsan/tests/abi/abi_tests_$precision "[threads]" -w NoTests
+  done
+fi
