@@ -36,7 +36,7 @@ const char* failure_name(Failure f) {
     case Failure::non_finite_increment: return "separation increment is not finite";
     case Failure::invalid_state: return "invalid state";
     case Failure::non_finite_result: return "non-finite result";
-    case Failure::local_solve_failed: return "implicit return mapping did not converge at the smallest substep";
+    case Failure::local_solve_failed: return "implicit return mapping did not converge (smallest substep or Newton budget reached)";
   }
   return "unknown";
 }
@@ -65,6 +65,15 @@ constexpr int kMaxSegments = 32;
 constexpr int kMaxRelaxSteps = 20000;
 constexpr int kMaxCrossingCuts = 40;
 constexpr double kTiny = 1e-300;
+// Implicit scheme: Newton iterations (all local solves) allowed per increment.
+// A smooth increment takes 3-10; 2e5 bounds the worst case to about 0.3 s
+// (tests/law/test_implicit.cpp, invariant 10: 35 of 48 000 extreme
+// increments fail on it or at the smallest substep).
+constexpr int kMaxNewtonIterations = 200000;
+// Newton iterations per start of one local solve. Newton converges in fewer
+// than 10 when it converges at all; a start that has not converged by then is
+// better abandoned for the next start or a halved substep.
+constexpr int kLocalNewtonIterations = 50;
 
 // Increments of everything the rate statement integrates, over one stage.
 struct Rates {
@@ -452,7 +461,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
       predictor << trial - dl0 * fP.k_A_m, dl0, kappa + dl0 * Vec3(fP.gI, fP.gII, fP.gIII);
       if (predictor.allFinite()) start = &predictor;
     }
-    b.solution = solve_local(M, b.problem, M.controls.ftol, start);
+    b.solution = solve_local(M, b.problem, M.controls.ftol, start, kLocalNewtonIterations);
     st.newton_iterations += b.solution.iterations;
     if (!b.solution.converged) return Outcome::failed;
     b.end = local_derivatives(M, b.solution.x.head<3>(), b.solution.x.tail<3>());
@@ -786,6 +795,13 @@ struct Stepper {
     for (long pass = 0; T < 1; ++pass) {
       if (substeps() >= c.max_substeps || pass >= 4L * c.max_substeps) {
         st.failure = Failure::too_many_substeps;
+        return T;
+      }
+      // The substep budget alone allows millions of Newton iterations (each
+      // halving down to min_substep restarts the local solves); a solver
+      // waiting on this point would see a hang, so the work is capped too.
+      if (st.newton_iterations > kMaxNewtonIterations) {
+        st.failure = Failure::local_solve_failed;
         return T;
       }
       dT = std::min(dT, 1 - T);

@@ -18,7 +18,7 @@ enum class Failure : int {
   non_finite_increment = 4,  // the separation increment holds NaN or infinity
   invalid_state = 5,         // the incoming state breaks a rule (see check_state)
   non_finite_result = 6,     // a result (traction, energy, state) beyond the floating-point range: start state kept
-  local_solve_failed = 7,    // implicit scheme: Newton failed at the smallest plastic substep
+  local_solve_failed = 7,    // implicit scheme: Newton failed at the smallest substep, or spent its budget
 };
 const char* failure_name(Failure f);
 
