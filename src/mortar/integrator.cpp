@@ -70,10 +70,6 @@ constexpr double kTiny = 1e-300;
 // (tests/law/test_implicit.cpp, invariant 10: 35 of 48 000 extreme
 // increments fail on it or at the smallest substep).
 constexpr int kMaxNewtonIterations = 200000;
-// Newton iterations per start of one local solve. Newton converges in fewer
-// than 10 when it converges at all; a start that has not converged by then is
-// better abandoned for the next start or a halved substep.
-constexpr int kLocalNewtonIterations = 50;
 
 // Increments of everything the rate statement integrates, over one stage.
 struct Rates {
@@ -461,7 +457,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
       predictor << trial - dl0 * fP.k_A_m, dl0, kappa + dl0 * Vec3(fP.gI, fP.gII, fP.gIII);
       if (predictor.allFinite()) start = &predictor;
     }
-    b.solution = solve_local(M, b.problem, M.controls.ftol, start, kLocalNewtonIterations);
+    b.solution = solve_local(M, b.problem, M.controls.ftol, start);
     st.newton_iterations += b.solution.iterations;
     if (!b.solution.converged) return Outcome::failed;
     b.end = local_derivatives(M, b.solution.x.head<3>(), b.solution.x.tail<3>());
