@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "bench.hpp"
 #include "checks.hpp"
 #include "csv.hpp"
 #include "inp.hpp"
@@ -184,6 +185,20 @@ int main(int argc, char** argv) {
   inp_cmd->add_option("--stol", inp.stol, "Also write props(16) = STOL (and props(15))");
   inp_cmd->add_option("--name", inp.name, "NAME of the surface interaction")->capture_default_str();
 
+  BenchOptions bench;
+  bench.data_dir = MJ_CALIBRATION_DATA_DIR;
+  bool bench_no_plots = false;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "Work-precision study and stability map of the schemes");
+  bench_cmd->add_flag("--quick", bench.quick, "Fewer increment sizes, tolerances and paths (for CI)");
+  bench_cmd->add_option("--out", bench.out_dir, "Folder for CSVs, charts and the stability list")
+      ->capture_default_str();
+  bench_cmd->add_option("--data", bench.data_dir, "The calibration data folder")->capture_default_str();
+  bench_cmd->add_option("--path", bench.paths, "Only this bench path (id); repeatable");
+  bench_cmd->add_option("--budget", bench.budget_seconds, "Wall time allowed per run of one point [s]")
+      ->capture_default_str();
+  bench_cmd->add_flag("--no-plots", bench_no_plots, "Skip the charts");
+  bench_cmd->add_flag("--quiet,-q", bench.quiet, "No progress on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -193,6 +208,10 @@ int main(int argc, char** argv) {
   try {
     if (*run_cmd) return run_command(run);
     if (*inp_cmd) return inp_command(inp);
+    if (*bench_cmd) {
+      bench.plots = !bench_no_plots;
+      return run_bench_command(bench, std::cout, std::cerr);
+    }
     val.plots = !no_plots;
     return run_validation(val, std::cout, std::cerr);
   } catch (const InputError& e) {
