@@ -14,6 +14,7 @@
 #include "bench.hpp"
 #include "checks.hpp"
 #include "csv.hpp"
+#include "implicit_command.hpp"
 #include "inp.hpp"
 #include "input_error.hpp"
 #include "parameter_file.hpp"
@@ -35,13 +36,16 @@ constexpr int kExitChecksFailed = 1;  // a check failed or a run could not be co
 constexpr int kExitBadInput = 2;      // bad arguments or input files
 
 const std::map<std::string, Scheme> kSchemes = {{"modified-euler", Scheme::modified_euler},
-                                                {"forward-euler", Scheme::forward_euler}};
+                                                {"forward-euler", Scheme::forward_euler},
+                                                {"implicit", Scheme::implicit}};
 
 struct RunArgs {
-  std::string params, protocol, out, scheme = "modified-euler";
+  std::string params, protocol, out, scheme;  // scheme: empty = the solver's default
+  std::string solver = "explicit";
   double stol = 0, traction_tol = 1e-9;
-  int points = 1, block = 512;
-  bool quiet = false;
+  int points = 1, block = 512, max_cuts = 5;
+  bool quiet = false, print_residuals = false;
+  bool points_given = false, block_given = false, max_cuts_given = false;
 };
 
 void check_stol(double stol) {
@@ -58,13 +62,26 @@ double difference(const Sample& a, const Sample& b) {
   return std::max(d, std::abs(a.dissipation_increment - b.dissipation_increment));
 }
 
+// --solver implicit: one point through UINTER (implicit_command.hpp).
+int run_implicit(const RunArgs& a) {
+  ImplicitRunRequest r{a.params, a.protocol, a.out, {}, a.print_residuals, a.quiet};
+  r.settings.scheme = kSchemes.at(a.scheme.empty() ? "implicit" : a.scheme);
+  r.settings.stol = a.stol;
+  r.settings.options.traction_tolerance = a.traction_tol;
+  r.settings.options.max_cuts = a.max_cuts;
+  return run_implicit_command(r, std::cerr);
+}
+
 int run_command(const RunArgs& a) {
   check_stol(a.stol);
   if (!(a.traction_tol > 0)) throw InputError("--traction-tol must be > 0 [MPa]");
+  check_solver_options({a.solver, a.points_given, a.block_given, a.max_cuts_given, a.print_residuals, a.points,
+                        a.block, a.max_cuts});
+  if (a.solver == "implicit") return run_implicit(a);
   const ParameterSet params = read_parameter_file(a.params);
   const Protocol protocol = read_protocol_file(a.protocol);
   RunSettings settings;
-  settings.scheme = kSchemes.at(a.scheme);
+  settings.scheme = kSchemes.at(a.scheme.empty() ? "modified-euler" : a.scheme);
   settings.stol = a.stol;
   settings.points = a.points;
   settings.block = a.block;
@@ -141,7 +158,7 @@ int inp_command(const InpArgs& a) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"masonry-joint: mock Abaqus/Explicit solver for the mortar-joint VUINTERACTION"};
+  CLI::App app{"masonry-joint: mock Abaqus/Explicit (VUINTERACTION) and Abaqus/Standard (UINTER) solver for the mortar joint"};
   app.require_subcommand(1);
   std::vector<std::string> scheme_names;
   for (const auto& s : kSchemes) scheme_names.push_back(s.first);
@@ -150,9 +167,18 @@ int main(int argc, char** argv) {
   CLI::App* run_cmd = app.add_subcommand("run", "Run a loading program; one CSV row per increment");
   run_cmd->add_option("--params", run.params, "Parameter file (TOML)")->required();
   run_cmd->add_option("--protocol", run.protocol, "Loading program (TOML)")->required();
-  run_cmd->add_option("--scheme", run.scheme, "Integration scheme, props(15)")
-      ->check(CLI::IsMember(scheme_names))
+  run_cmd->add_option("--scheme", run.scheme,
+                      "Integration scheme, props(15); default modified-euler (--solver explicit), implicit "
+                      "(--solver implicit)")
+      ->check(CLI::IsMember(scheme_names));
+  run_cmd->add_option("--solver", run.solver, "Mock solver: explicit (vuinteraction_), implicit (uinter_)")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kSolverNames), std::end(kSolverNames))))
       ->capture_default_str();
+  run_cmd->add_option("--max-cuts", run.max_cuts, "--solver implicit: cut-backs allowed per increment")
+      ->check(CLI::Range(0, 20))
+      ->capture_default_str();
+  run_cmd->add_flag("--print-residuals", run.print_residuals,
+                    "--solver implicit: every attempt's residual sequence on stderr");
   run_cmd->add_option("--stol", run.stol, "Substep error tolerance STOL, props(16); 0 keeps the default 1e-5");
   run_cmd->add_option("--points", run.points, "Identical interface points")->check(CLI::Range(1, 10000000))
       ->capture_default_str();
@@ -206,7 +232,12 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : kExitBadInput;
   }
   try {
-    if (*run_cmd) return run_command(run);
+    if (*run_cmd) {
+      run.points_given = run_cmd->count("--points") > 0;
+      run.block_given = run_cmd->count("--block") > 0;
+      run.max_cuts_given = run_cmd->count("--max-cuts") > 0;
+      return run_command(run);
+    }
     if (*inp_cmd) return inp_command(inp);
     if (*bench_cmd) {
       bench.plots = !bench_no_plots;
