@@ -187,55 +187,76 @@ ImplicitPointSolver::Vec3 ImplicitPointSolver::newton_step(const PointTargets& t
   return K.fullPivLu().solve(b);
 }
 
+// The iterate at the start of an attempt, as Abaqus's absolute RDISP: the
+// displacement-controlled components at their targets exactly, the free ones
+// where the increment started.
+ImplicitPointSolver::Vec3 ImplicitPointSolver::prescribed(const PointTargets& t) const {
+  Vec3 x = committed_rdisp_;
+  for (int j = 0; j < uinter_.n_dir(); ++j)
+    if (!free_component(t, j)) x[j] = rdisp_of(j, t.value[j]);
+  return x;
+}
+
+// After a call: true when the routine abandons the attempt (recorded).
+bool ImplicitPointSolver::abandoned(ResidualSequence& record) const {
+  if (!cut_requested()) return false;
+  record.outcome = AttemptOutcome::cut_by_routine;
+  record.pnewdt = uinter_.pnewdt();
+  return true;
+}
+
+// The stiffness call at the start (DRDISP = 0) and the predictor from its
+// DDSDDR: K_FF dx_F = -(STRESS_F - P_F) - K_FD dx_D. False when abandoned.
+bool ImplicitPointSolver::predict(const PointTargets& t, UinterTime& time, Vec3& x, ResidualSequence& record) {
+  const Vec3 d_prescribed = x - committed_rdisp_;
+  call(committed_rdisp_, time);
+  if (abandoned(record)) return false;
+  Vec3 rhs = -residual(t);
+  const int nd = uinter_.n_dir();
+  for (int i = 0; i < nd; ++i)
+    for (int j = 0; j < nd; ++j) rhs[i] -= uinter_.ddsddr(i, j) * d_prescribed[j];
+  const Vec3 dx = newton_step(t, rhs);
+  if (!dx.allFinite()) {
+    record.outcome = AttemptOutcome::diverged;
+    return false;
+  }
+  x += dx;
+  return true;
+}
+
+// Iterations that cannot converge: a non-finite residual or one growing in
+// two consecutive iterations (divergence), or a repeated two-iterate cycle.
+bool ImplicitPointSolver::hopeless(ResidualSequence& r) const {
+  const int k = r.count;
+  const double* q = r.residual.data();
+  if (!std::isfinite(q[k - 1]) || (k >= 3 && q[k - 1] > q[k - 2] && q[k - 2] > q[k - 3])) {
+    r.outcome = AttemptOutcome::diverged;
+    return true;
+  }
+  if (k >= 4 && same(q[k - 1], q[k - 3]) && same(q[k - 2], q[k - 4])) {
+    r.outcome = AttemptOutcome::cycling;
+    return true;
+  }
+  return false;
+}
+
 AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, UinterTime time, ResidualSequence& record) {
   time.increment = ++kinc_;
   time.iteration = 0;
-  const int nd = uinter_.n_dir();
-  bool any_free = false;
-  // The iterate, as Abaqus's absolute RDISP: displacement-controlled
-  // components at their targets exactly, free ones from the start.
-  Vec3 x = committed_rdisp_;
-  Vec3 d_prescribed = Vec3::Zero();
-  for (int j = 0; j < nd; ++j) {
-    if (free_component(t, j)) {
-      any_free = true;
-    } else {
-      x[j] = rdisp_of(j, t.value[j]);
-      d_prescribed[j] = x[j] - committed_rdisp_[j];
-    }
-  }
-  if (any_free) {
-    // Stiffness call at the start (DRDISP = 0), then the predictor:
-    // K_FF dx_F = -(STRESS_F - P_F) - K_FD dx_D.
-    call(committed_rdisp_, time);
-    if (cut_requested()) {
-      record.outcome = AttemptOutcome::cut_by_routine;
-      record.pnewdt = uinter_.pnewdt();
-      return record.outcome;
-    }
-    Vec3 rhs = -residual(t);
-    for (int i = 0; i < nd; ++i)
-      for (int j = 0; j < nd; ++j) rhs[i] -= uinter_.ddsddr(i, j) * d_prescribed[j];
-    x += newton_step(t, rhs);
-  }
+  Vec3 x = prescribed(t);
+  const bool any_free = std::any_of(t.kind.begin(), t.kind.begin() + uinter_.n_dir(),
+                                    [](Control c) { return c == Control::traction; });
+  if (any_free && !predict(t, time, x, record)) return record.outcome;
   for (int k = 1; k <= options_.max_iterations; ++k) {
     call(x, time);
-    if (cut_requested()) {
-      record.outcome = AttemptOutcome::cut_by_routine;
-      record.pnewdt = uinter_.pnewdt();
-      return record.outcome;
-    }
+    if (abandoned(record)) return record.outcome;
     const Vec3 R = residual(t);
-    const double r = R.cwiseAbs().maxCoeff();
-    record.residual[static_cast<size_t>(record.count++)] = r;
-    if (r <= options_.traction_tolerance) {
+    record.residual[static_cast<size_t>(record.count++)] = R.cwiseAbs().maxCoeff();
+    if (record.residual[static_cast<size_t>(k - 1)] <= options_.traction_tolerance) {
       commit(x, record);
       return record.outcome = AttemptOutcome::converged;
     }
-    const double* seq = record.residual.data();
-    const bool growing = k >= 3 && r > seq[k - 2] && seq[k - 2] > seq[k - 3];
-    if (!std::isfinite(r) || growing) return record.outcome = AttemptOutcome::diverged;
-    if (k >= 4 && same(r, seq[k - 3]) && same(seq[k - 2], seq[k - 4])) return record.outcome = AttemptOutcome::cycling;
+    if (hopeless(record)) return record.outcome;
     const Vec3 dx = newton_step(t, -R);
     if (!dx.allFinite()) return record.outcome = AttemptOutcome::diverged;
     x += dx;

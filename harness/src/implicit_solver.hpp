@@ -95,6 +95,10 @@ class ImplicitPointSolver {
 
   PointTargets targets_at(const PointTargets& from, const PointTargets& to, double end) const;
   AttemptOutcome attempt(const PointTargets& targets, UinterTime time, ResidualSequence& record);
+  Vec3 prescribed(const PointTargets& t) const;
+  bool predict(const PointTargets& t, UinterTime& time, Vec3& x, ResidualSequence& record);
+  bool abandoned(ResidualSequence& record) const;
+  bool hopeless(ResidualSequence& record) const;
   void call(const Vec3& rdisp, UinterTime& time);
   bool cut_requested() const;
   Vec3 residual(const PointTargets& t) const;
