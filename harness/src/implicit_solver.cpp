@@ -70,6 +70,7 @@ PointTargets ImplicitPointSolver::targets_at(const PointTargets& from, const Poi
 
 void ImplicitPointSolver::advance(const PointTargets& from, const PointTargets& to, const UinterTime& time, int step,
                                   long increment, const std::function<void(const ResidualSequence&)>& on_attempt) {
+  if (step != step_) solved_in_step_ = 0;
   step_ = step;
   increment_ = increment;
   result_.start_traction = result_.traction;
@@ -96,6 +97,7 @@ void ImplicitPointSolver::advance(const PointTargets& from, const PointTargets& 
     ++outcomes_[static_cast<size_t>(outcome)];
     if (on_attempt) on_attempt(record);
     if (outcome == AttemptOutcome::converged) {
+      ++solved_in_step_;
       start = end;
       continue;
     }
@@ -241,7 +243,7 @@ bool ImplicitPointSolver::hopeless(ResidualSequence& r) const {
 }
 
 AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, UinterTime time, ResidualSequence& record) {
-  time.increment = ++kinc_;
+  time.increment = static_cast<int>(solved_in_step_ + 1);
   time.iteration = 0;
   Vec3 x = prescribed(t);
   const bool any_free = std::any_of(t.kind.begin(), t.kind.begin() + uinter_.n_dir(),

@@ -112,7 +112,8 @@ class ImplicitPointSolver {
   UinterPoint uinter_;
   long calls_ = 0;
   std::array<long, 5> outcomes_{};
-  int sub_increments_ = 0, kinc_ = 0;
+  int sub_increments_ = 0;
+  long solved_in_step_ = 0;  // converged (sub)increments of the current step: KINC - 1
   int step_ = 0;         // program step and increment being solved, for messages
   long increment_ = 0;
 

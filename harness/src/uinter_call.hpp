@@ -57,7 +57,7 @@ struct UinterSetup {
 // Abaqus/Standard's counters and times of one call.
 struct UinterTime {
   int step = 1;               // KSTEP
-  int increment = 1;          // KINC (counts attempts: a cut increment is a new one)
+  int increment = 1;          // KINC: increment of the step; a cut-back retries the same number
   int iteration = 0;          // KIT
   double step_time = 0;       // TIME(1), at the end of the increment
   double total_time = 0;      // TIME(2)
