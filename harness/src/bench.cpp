@@ -224,8 +224,9 @@ class Study {
   Timing time_it(const BenchPath& path, const BenchScheme& s, const std::vector<Vec3>& history,
                  const TimingWindows& windows, const Trajectory& t) {
     const double sweep = std::max(t.seconds, 1e-7);
-    const int repeats = std::clamp(static_cast<int>(policy_.seconds / sweep), policy_.min_repeats,
-                                   policy_.max_repeats);
+    // Long sweeps vary little between repeats; three give the median and spread.
+    const int min_repeats = sweep > 0.1 ? std::min(3, policy_.min_repeats) : policy_.min_repeats;
+    const int repeats = std::clamp(static_cast<int>(policy_.seconds / sweep), min_repeats, policy_.max_repeats);
     return time_history(path.parameters, path.directions, s.controls, history, windows, t.snapshots, repeats);
   }
 
@@ -237,6 +238,13 @@ class Study {
 // ---- files ---------------------------------------------------------------
 
 std::string number(double x) { return std::isfinite(x) ? format_number(x, 6) : "nan"; }
+
+// Free text in a CSV field: no commas or quotes, so that the field splits plainly.
+std::string csv_text(std::string s) {
+  std::replace(s.begin(), s.end(), ',', ';');
+  std::replace(s.begin(), s.end(), '"', '\'');
+  return s;
+}
 
 void write_rows_csv(const std::string& file, const BenchResult& r) {
   std::ofstream f(file);
@@ -251,7 +259,7 @@ void write_rows_csv(const std::string& file, const BenchResult& r) {
       << "," << (timed ? number(row.timing.max_ns) : "nan") << "," << row.timing.points << ","
       << row.timing.calls << "," << row.timing.repeats << "," << (row.timing.reproduced ? 1 : 0) << "," << (timed ? number(row.path_microseconds()) : "nan") << ","
       << outcome_name(row.outcome) << "," << number(row.drift) << "," << row.drifted_increments << ","
-      << number(row.seconds) << ",\"" << row.why << "\"\n";
+      << number(row.seconds) << ",\"" << csv_text(row.why) << "\"\n";
   }
   if (!f) throw InputError(file + ": write failed");
 }
@@ -345,6 +353,41 @@ std::string summary_table(const BenchResult& r) {
   return t.str();
 }
 
+// Per scheme and increment size on one path: the cheapest run reaching the
+// target error, or the smallest error reached.
+std::string target_table(const BenchResult& r, const std::string& path) {
+  std::ostringstream t;
+  t << "Cheapest run reaching a relative traction error of " << format_number(kTargetError, 2) << " on " << path
+    << " (ns per point-update, median; in brackets the tolerance, and the cost of the whole path per point):\n\n"
+    << "| scheme |";
+  for (double h : r.increment_sizes) t << " h = " << h_text(h) << " |";
+  t << "\n|---|";
+  for (size_t i = 0; i < r.increment_sizes.size(); ++i) t << "---|";
+  t << "\n";
+  for (const char* scheme : {"forward-euler", "modified-euler", "implicit"}) {
+    t << "| " << scheme << " |";
+    for (double h : r.increment_sizes) {
+      const BenchRow* best = nullptr;
+      double smallest = kNaN;
+      for (const BenchRow& row : r.rows) {
+        if (row.path != path || row.scheme.name != scheme || row.h != h || row.timing.repeats == 0) continue;
+        if (!(smallest <= row.error_traction)) smallest = row.error_traction;
+        if (row.error_traction <= kTargetError && (!best || row.timing.median_ns < best->timing.median_ns))
+          best = &row;
+      }
+      if (best) {
+        t << " " << format_number(best->timing.median_ns, 3) << " ns (";
+        if (best->scheme.controls.stol > 0) t << "STOL " << format_number(best->scheme.controls.stol, 2) << "; ";
+        t << format_number(best->path_microseconds(), 3) << " us) |";
+      } else {
+        t << " not reached (best " << (std::isfinite(smallest) ? format_number(smallest, 2) : "none") << ") |";
+      }
+    }
+    t << "\n";
+  }
+  return t.str();
+}
+
 std::string stability_list(const BenchResult& r) {
   std::ostringstream o;
   o << "# Stability map: where each scheme fails and why\n\n"
@@ -356,6 +399,11 @@ std::string stability_list(const BenchResult& r) {
        "time budget; non-finite: NaN or infinity returned.\n\n";
   for (const BenchScheme& s : r.schemes) {
     o << "## " << s.label() << "\n\n";
+    std::map<std::string, int> count;
+    for (const BenchRow& row : r.rows)
+      if (row.scheme.label() == s.label()) ++count[outcome_name(row.outcome)];
+    for (const auto& [name, n] : count) o << (name == count.begin()->first ? "" : ", ") << n << " " << name;
+    o << " (of " << r.paths.size() * r.increment_sizes.size() << ")\n\n";
     int listed = 0;
     for (const BenchRow& row : r.rows) {
       if (row.scheme.label() != s.label() || row.outcome == Outcome::accurate) continue;
@@ -451,6 +499,7 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
       summary << "bench: relative traction error " << format_number(kTargetError, 2) << " on vdp_sn0.5: "
               << target_line(r, "vdp_sn0.5", s) << "\n";
   summary << "\n" << summary_table(r);
+  if (has_vdp) summary << "\n" << target_table(r, "vdp_sn0.5");
   write_text(dir + "/summary.md", summary.str());
   out << summary.str();
   if (options.plots) {

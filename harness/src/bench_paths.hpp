@@ -10,7 +10,9 @@
 //   separations a mixed-control run of the calibration case (its own
 //   parameters, program, scheme and STOL) went through, one leg per program
 //   step (cycle legs counted separately). For the constant-normal-stress
-//   tests that history is the one that held sigma_n at its value.
+//   tests that history is the one that held sigma_n at its value. The
+//   Atkinson program is cut after its first amplitude's cycles (+/-0.5 mm,
+//   twice): its larger cycles repeat the same sliding for 24 more mm.
 // - Mixed paths that stress the methods, given directly as corner points
 //   (with the van der Pluijm -0.5 MPa parameters), and a cyclic shear with
 //   reversals at three normal stresses, again from a mixed-control run.

@@ -51,6 +51,16 @@ std::string quoted(const std::string& s) {
   return q + "\"";
 }
 
+// Text for gnuplot's enhanced mode: path ids keep their underscores.
+std::string plain(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '_' || c == '^' || c == '{' || c == '}' || c == '@' || c == '&' || c == '~') out += "\\";
+    out += c;
+  }
+  return out;
+}
+
 std::string e_format(double x, int digits = 0) {
   char b[32];
   std::snprintf(b, sizeof b, "%.*e", digits, x);
@@ -79,6 +89,16 @@ void add_point(Line& line, const BenchResult& r, const BenchRow& row, bool whole
                          double(point_type(h_index(r, row.h)))});
 }
 
+std::string stol_range(const BenchResult& r) {
+  double lo = 1, hi = 0;
+  for (const BenchScheme& s : r.schemes)
+    if (s.controls.scheme == Scheme::modified_euler) {
+      lo = std::min(lo, s.controls.stol);
+      hi = std::max(hi, s.controls.stol);
+    }
+  return "STOL " + e_format(hi) + "..." + e_format(lo);
+}
+
 // forward Euler and the implicit scheme: one line across the increment
 // sizes; modified Euler: one line per increment size, across STOL.
 std::vector<Line> lines_of(const BenchResult& r, const std::string& path, bool whole_path) {
@@ -88,7 +108,7 @@ std::vector<Line> lines_of(const BenchResult& r, const std::string& path, bool w
     for (double h : per_h ? r.increment_sizes : std::vector<double>{0.0}) {
       Line line;
       line.colour = scheme_colour(scheme);
-      line.title = std::string(scheme_title(scheme)) + (per_h ? ", h = " + e_format(h) + " mm, STOL 1e-1...1e-8"
+      line.title = std::string(scheme_title(scheme)) + (per_h ? ", h = " + e_format(h) + " mm, " + stol_range(r)
                                                               : ", h = " + e_format(r.increment_sizes.front()) +
                                                                     "..." + e_format(r.increment_sizes.back()) + " mm");
       for (const BenchRow& row : r.rows)
@@ -160,7 +180,7 @@ std::string write_focus_chart(const std::string& out_dir, const BenchResult& r) 
     g << "\nset terminal " << terminal(t, 1500, 700) << "\nset output \"work_precision." << kTerminals[t][1]
       << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
       << "set key outside right top font \",9\"\n"
-      << "set multiplot layout 1,2 title " << quoted("Work-precision: " + title + " (path " + path + ")")
+      << "set multiplot layout 1,2 title " << quoted("Work-precision: " + title + " (path " + plain(path) + ")")
       << " font \",13\"\n";
     write_panel(g, r, path, "error against cost per point-update", false, false, block);
     write_panel(g, r, path, "error against cost for the whole path", true, true, block);
@@ -183,7 +203,7 @@ std::string write_all_paths_chart(const std::string& out_dir, const BenchResult&
       << " title \"Work-precision on every bench path: traction error against cost per point-update\" font "
          "\",13\"\n";
     for (size_t p = 0; p < r.paths.size(); ++p)
-      write_panel(g, r, r.paths[p], r.paths[p], false, p == 0, block);
+      write_panel(g, r, r.paths[p], plain(r.paths[p]), false, p == 0, block);
     g << "unset multiplot\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");
@@ -219,14 +239,14 @@ std::string write_stability_map(const std::string& out_dir, const BenchResult& r
   for (int t = 0; t < 2; ++t) {
     g << "\nset terminal " << terminal(t, px_width, 760) << "\nset output \"stability_map." << kTerminals[t][1]
       << "\"\nunset key\nset title \"Stability map: outcome of each scheme x increment size x path "
-         "(cell text: relative traction error)\" font \",13\"\n"
+         "(cell text: relative traction error)\" font \",13\" offset 0,1.5\n"
       << "set xrange [-0.6:" << width + 0.6 << "]\nset yrange [-0.6:" << r.schemes.size() - 0.4 << "]\n"
       << "set xtics (" << xtics.str() << ") rotate by 90 right font \",8\" scale 0\n"
       << "set ytics (" << ytics.str() << ") font \",9\" scale 0\n"
-      << "set xlabel \"increment size h [mm], grouped by path\"\nset tmargin 6\nset bmargin 6\n"
+      << "set xlabel \"increment size h [mm], grouped by path\"\nset tmargin 7\nset bmargin 6\n"
       << "unset label\n";
     for (size_t p = 0; p < r.paths.size(); ++p)
-      g << "set label " << p + 1 << " " << quoted(r.paths[p]) << " at " << column_of(p, 0) + 0.5 * (nh - 1) << ","
+      g << "set label " << p + 1 << " " << quoted(plain(r.paths[p])) << " at " << column_of(p, 0) + 0.5 * (nh - 1) << ","
         << r.schemes.size() - 0.2 << " center font \",9\"\n";
     g << "set key outside bottom center horizontal font \",10\"\n"
       << "plot $cells using 1:2:(0.48):(0.48):3 with boxxy fs solid 1.0 border lc rgb \"#ffffff\" lc rgb variable "
