@@ -856,18 +856,35 @@ struct Stepper {
       }
       cuts = 0;
       cut = Bracket{};
-      if (sens) {
+      Point Q = N;
+      if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
+      const State pre = Q.y;
+      const Vec3 sigma_pre = Q.sigma;
+      settle(M, Q, P.y.elastic_separation());
+      // The end point lies on the surface unless settle() had to keep the
+      // secant damage from decreasing (an open step whose frozen-branch
+      // solve failed): the traction re-derived from Eq. 1 then differs from
+      // the return's. Such a step is halved; at the smallest substep the
+      // drift correction of the explicit scheme returns it, and the tangent
+      // becomes approximate.
+      bool drift_corrected = false;
+      if (!switch_here && yield_of(M, Q) > 10 * yield_tolerance(M, Q.sigma)) {
+        if (dT > c.min_substep) {
+          dT = std::max(0.5 * dT, c.min_substep);
+          ++st.substeps_rejected;
+          continue;
+        }
+        correct_drift(M, Q);
+        drift_corrected = true;
+      }
+      if (sens && !drift_corrected) {
         // This step covers dT/(1 - T) of what is left of the increment.
         const Mat3 Ddd = (dT / (1 - T)) * (Mat3::Identity() - sens->separation);
         *sens = backward_euler_sensitivity(M, P, dd, b, *sens, Ddd);
       }
-      const Vec3 e_start = P.y.elastic_separation();
-      P = N;
-      if (switch_here) P.y.plastic[0] = P.y.separation[0];  // on the boundary: delta_e_n = 0
-      const State pre = P.y;
-      const Vec3 sigma_pre = P.sigma;
-      settle(M, P, e_start);
-      if (sens) settle_sensitivity(M, pre, sigma_pre, P.y, *sens);
+      P = Q;
+      if (sens && !drift_corrected) settle_sensitivity(M, pre, sigma_pre, P.y, *sens);
+      if (drift_corrected) forget_sensitivity();
       ++st.substeps_accepted;
       T += dT;
       if (switch_here) {
