@@ -517,7 +517,14 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
     }
   }
   out << "bench: wrote " << dir << "/bench.csv, reference.csv, stability.md, summary.md"
-      << (options.plots ? ", work_precision.{png,svg}, stability_map.{png,svg}" : "") << "\n";
+      << (options.plots ? ", work_precision{,_all}.{png,svg}, stability_map.{png,svg}" : "") << "\n";
+  const ReferenceSpread spread = reference_spread(r);
+  if (!(spread.traction < kReferenceRequired && spread.energy < kReferenceRequired)) {
+    err << "masonry-joint bench: the reference moved by " << format_number(std::max(spread.traction, spread.energy), 2)
+        << " when tightened (reference.csv); the study needs less than " << format_number(kReferenceRequired, 2)
+        << " to tell accurate runs from inaccurate ones\n";
+    return 1;
+  }
   return 0;
 }
 

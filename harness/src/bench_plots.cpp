@@ -15,6 +15,12 @@ namespace mortar::harness {
 namespace {
 
 // Okabe-Ito colours (plots.cpp uses the same palette): one per scheme.
+// Modified Euler: one shade of its colour per increment size, dark = fine.
+const char* shade(size_t h_index) {
+  static const char* c[] = {"#7F2704", "#D55E00", "#F28E2B", "#FDBF6F", "#FEE6CE"};
+  return c[std::min<size_t>(h_index, 4)];
+}
+
 const char* scheme_colour(const std::string& scheme) {
   if (scheme == "forward-euler") return "#0072B2";
   if (scheme == "modified-euler") return "#D55E00";
@@ -107,7 +113,7 @@ std::vector<Line> lines_of(const BenchResult& r, const std::string& path, bool w
     const bool per_h = std::string(scheme) == "modified-euler";
     for (double h : per_h ? r.increment_sizes : std::vector<double>{0.0}) {
       Line line;
-      line.colour = scheme_colour(scheme);
+      line.colour = per_h ? shade(h_index(r, h)) : scheme_colour(scheme);
       line.title = std::string(scheme_title(scheme)) + (per_h ? ", h = " + e_format(h) + " mm, " + stol_range(r)
                                                               : ", h = " + e_format(r.increment_sizes.front()) +
                                                                     "..." + e_format(r.increment_sizes.back()) + " mm");
@@ -120,8 +126,11 @@ std::vector<Line> lines_of(const BenchResult& r, const std::string& path, bool w
   return lines;
 }
 
+// `key`: gnuplot's key settings for this panel, "" for none.
 void write_panel(std::ostream& g, const BenchResult& r, const std::string& path, const std::string& title,
-                 bool whole_path, bool key, int& block) {
+                 bool whole_path, const std::string& key_settings, int& block) {
+  const bool key = !key_settings.empty();
+  g << (key ? "set key " + key_settings : std::string("unset key")) << "\n";
   const std::vector<Line> lines = lines_of(r, path, whole_path);
   std::vector<std::string> items;
   for (const Line& line : lines) {
@@ -177,13 +186,14 @@ std::string write_focus_chart(const std::string& out_dir, const BenchResult& r) 
   const std::string title = r.path_titles[(it == r.paths.end() ? r.paths.begin() : it) - r.paths.begin()];
   for (int t = 0; t < 2; ++t) {
     int block = 0;
-    g << "\nset terminal " << terminal(t, 1500, 700) << "\nset output \"work_precision." << kTerminals[t][1]
-      << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
-      << "set key outside right top font \",9\"\n"
+    g << "\nset terminal " << terminal(t, 1500, 800) << "\nset output \"work_precision." << kTerminals[t][1]
+      << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset format x \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
+      << "set yrange [1e-11:1e4]  # headroom above the errors for the key\n"
       << "set multiplot layout 1,2 title " << quoted("Work-precision: " + title + " (path " + plain(path) + ")")
       << " font \",13\"\n";
-    write_panel(g, r, path, "error against cost per point-update", false, false, block);
-    write_panel(g, r, path, "error against cost for the whole path", true, true, block);
+    write_panel(g, r, path, "error against cost per point-update", false, "", block);
+    write_panel(g, r, path, "error against cost for the whole path", true, "inside top right font \",9\" box opaque",
+                block);
     g << "unset multiplot\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");
@@ -197,13 +207,13 @@ std::string write_all_paths_chart(const std::string& out_dir, const BenchResult&
   for (int t = 0; t < 2; ++t) {
     int block = 0;
     g << "\nset terminal " << terminal(t, 1800, 480 * rows) << "\nset output \"work_precision_all."
-      << kTerminals[t][1] << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
-      << "set key top right font \",8\" box opaque\n"
+      << kTerminals[t][1] << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset format x \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
+      << "set yrange [1e-11:1e4]  # headroom above the errors for the key\n"
       << "set multiplot layout " << rows << "," << columns
       << " title \"Work-precision on every bench path: traction error against cost per point-update\" font "
          "\",13\"\n";
     for (size_t p = 0; p < r.paths.size(); ++p)
-      write_panel(g, r, r.paths[p], plain(r.paths[p]), false, p == 0, block);
+      write_panel(g, r, r.paths[p], plain(r.paths[p]), false, p == 0 ? "top right font \",8\" box opaque" : "", block);
     g << "unset multiplot\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");
