@@ -92,7 +92,9 @@ void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int 
       if (!(s.dn >= 0 && s.dn <= 1 && s.ds >= 0 && s.ds <= 1)) ++t.damage_out_of_range;
       if (s.dn < state_old[k].dn || s.ds < state_old[k].ds) ++t.damage_decreased;
       const mortar::Vec3 sigma = law_traction(b, k);
-      if (scheme == mortar::Scheme::modified_euler) {
+      // Forward Euler has no drift correction: it may end outside (the
+      // bench's stability map measures by how much).
+      if (scheme != mortar::Scheme::forward_euler) {
         const double F = mortar::yield_function(sigma, mortar::surface_of(model, s));
         const double tol = mortar::yield_tolerance(model, sigma);
         t.worst_yield_ratio = std::max(t.worst_yield_ratio, F / tol);
@@ -134,16 +136,19 @@ void print(const char* what, const Tally& t) {
 }  // namespace
 
 TEST_CASE("Property: every state variable finite, damage in [0, 1] and never decreasing, on or inside the yield "
-          "surface within FTOL (3200 random paths through vuinteraction_)",
+          "surface within FTOL (3200 + 3200 + 800 random paths through vuinteraction_, three schemes)",
           "[property]") {
-  // 100 random valid sets per scheme, 16 points per block (one path each),
-  // 60 increments from every family: opening-closing, shear reversals under
-  // pressure, pressed shear, opening while sliding, and anything from 1e-12
-  // to 40 elastic limits. One set in four in 2D.
-  for (const mortar::Scheme scheme : {mortar::Scheme::modified_euler, mortar::Scheme::forward_euler}) {
-    std::mt19937 rng(scheme == mortar::Scheme::modified_euler ? 20261201 : 20261202);
+  // 100 random valid sets per explicit scheme and 50 for the implicit one
+  // (its extreme increments cost thousands of Newton iterations), 16 points
+  // per block (one path each), 60 increments from every family:
+  // opening-closing, shear reversals under pressure, pressed shear, opening
+  // while sliding, and anything from 1e-12 to 40 elastic limits. One set in
+  // four in 2D.
+  for (const mortar::Scheme scheme :
+       {mortar::Scheme::modified_euler, mortar::Scheme::forward_euler, mortar::Scheme::implicit}) {
+    std::mt19937 rng(20261200 + static_cast<int>(scheme));
     Tally t;
-    const int sets = scaled(100);
+    const int sets = scaled(scheme == mortar::Scheme::implicit ? 50 : 100);
     for (int set = 0; set < sets; ++set) {
       const mortar::Parameters p = random_parameters(rng);
       CAPTURE(set, p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs);
