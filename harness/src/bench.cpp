@@ -29,6 +29,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // enough that STOL, not the substep floor, decides the accuracy.
 constexpr double kReferenceMinSubstep = 1e-9;  // fraction of a call's increment
 constexpr double kReferenceMaxSubsteps = 1e8;
+constexpr double kReferenceBudgetSeconds = 3600;  // per reference run
 
 // Timing: sweeps of the whole path by a block of at most kBlockPoints points
 // (Abaqus/Explicit's blocks are of this order, nBlock <= 136 by default),
@@ -174,7 +175,8 @@ class Study {
     const ReferenceSettings& rs = r.reference;
     const int split = reference_split(h, rs.sub_increment);
     const long n = static_cast<long>(history.size()) - 1;
-    const double budget = 100 * o_.budget_seconds;
+    // Not --budget: a reference that cannot finish is a failure of the study.
+    const double budget = kReferenceBudgetSeconds;
     Trajectory ref = drive_point(path.parameters, path.directions, reference_controls(rs.stol, rs.ftol), history,
                                  split, budget, false);
     const Trajectory check = drive_point(path.parameters, path.directions, reference_controls(rs.check_stol, rs.check_ftol), history,
@@ -333,7 +335,7 @@ std::string summary_table(const BenchResult& r) {
     t << "| " << s.label() << " |";
     for (double h : r.increment_sizes) {
       int accurate = 0, total = 0;
-      double worst = 0, ns = 0;
+      double worst = -1, ns = 0;
       std::map<std::string, int> bad;
       for (const BenchRow& row : r.rows) {
         if (row.scheme.label() != s.label() || row.h != h) continue;
@@ -345,7 +347,7 @@ std::string summary_table(const BenchResult& r) {
       }
       t << " " << accurate << "/" << total << " accurate";
       for (const auto& [name, count] : bad) t << ", " << count << " " << name;
-      t << "; worst error " << format_number(worst, 2) << "; " << (ns > 0 ? format_number(ns, 3) : "–")
+      t << "; worst error " << (worst >= 0 ? format_number(worst, 2) : "–") << "; " << (ns > 0 ? format_number(ns, 3) : "–")
         << " ns |";
     }
     t << "\n";
