@@ -433,6 +433,7 @@ void write_text(const std::string& file, const std::string& text) {
 }
 
 void prepare_out_dir(const std::string& dir) {
+  if (dir.empty()) throw InputError("--out is empty: the bench needs a directory to write its files into");
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw InputError("--out " + dir + ": exists and is not a directory (the bench writes several files into it)");
@@ -440,9 +441,15 @@ void prepare_out_dir(const std::string& dir) {
   if (ec) throw InputError("--out " + dir + ": cannot create the directory: " + ec.message());
 }
 
+std::string plain_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 void check_options(const BenchOptions& o) {
   if (!(std::isfinite(o.budget_seconds) && o.budget_seconds > 0))
-    throw InputError("--budget " + format_number(o.budget_seconds, 6) +
+    throw InputError("--budget " + plain_number(o.budget_seconds) +
                      " violates the rule: a finite number of seconds > 0 (wall time allowed per run)");
   std::error_code ec;
   if (!fs::is_directory(o.data_dir, ec))
