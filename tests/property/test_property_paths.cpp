@@ -139,8 +139,8 @@ TEST_CASE("Property: every state variable finite, damage in [0, 1] and never dec
           "surface within FTOL (3200 + 3200 + 800 random paths through vuinteraction_, three schemes)",
           "[property]") {
   // 100 random valid sets per explicit scheme and 50 for the implicit one
-  // (its extreme increments cost thousands of Newton iterations; under the
-  // sanitizers scaled twice, 3 sets), 16 points
+  // (its extreme increments cost thousands of Newton iterations; one set
+  // under the sanitizers), 16 points
   // per block (one path each), 60 increments from every family:
   // opening-closing, shear reversals under pressure, pressed shear, opening
   // while sliding, and anything from 1e-12 to 40 elastic limits. One set in
@@ -149,7 +149,7 @@ TEST_CASE("Property: every state variable finite, damage in [0, 1] and never dec
        {mortar::Scheme::modified_euler, mortar::Scheme::forward_euler, mortar::Scheme::implicit}) {
     std::mt19937 rng(20261200 + static_cast<int>(scheme));
     Tally t;
-    const int sets = scheme == mortar::Scheme::implicit ? scaled_twice(50) : scaled(100);
+    const int sets = scheme == mortar::Scheme::implicit ? implicit_sets(50) : scaled(100);
     for (int set = 0; set < sets; ++set) {
       const mortar::Parameters p = random_parameters(rng);
       CAPTURE(set, p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs);
