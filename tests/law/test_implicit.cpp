@@ -16,6 +16,7 @@
 #include "mortar/surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
+#include "random_parameters.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -417,30 +418,12 @@ TEST_CASE("Implicit, invariant 7: energy closure", "[implicit][invariant7]") {
 }
 
 namespace {
-double log_uniform(std::mt19937& rng, double lo, double hi) {
-  return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng));
-}
-double uniform(std::mt19937& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-// The parameter and path generators of test_robustness.cpp (same ranges,
-// including snap-back sets), with their own seed.
+using mj_test::log_uniform;
+using mj_test::uniform;
+// The generators of test_robustness.cpp (tests/support/random_parameters.hpp),
+// with their own seed.
 Parameters random_parameters(std::mt19937& rng) {
-  Parameters p;
-  p.kn = log_uniform(rng, 20, 5000);
-  p.ks = p.kn * uniform(rng, 0.2, 0.8);
-  p.ft0 = log_uniform(rng, 0.05, 3);
-  p.phi0 = uniform(rng, 20, 50);
-  p.phir = p.phi0 * uniform(rng, 0.6, 1.0);
-  p.c0 = p.ft0 * std::tan(p.phi0 * M_PI / 180) * uniform(rng, 1.05, 4);
-  p.GIC = log_uniform(rng, 1e-4, 0.05);
-  p.GIIC = p.GIC * uniform(rng, 2, 25);
-  p.m = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
-  p.psi0 = uniform(rng, 0, 35);
-  p.psir = p.psi0 * uniform(rng, 0, 1);
-  p.n = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
-  p.bn = uniform(rng, 0, 15);
-  p.bs = uniform(rng, 0, 6);
+  const Parameters p = mj_test::random_parameters(rng);
   REQUIRE(validate(p).ok());
   return p;
 }

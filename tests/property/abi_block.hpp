@@ -16,6 +16,7 @@
 
 #include "mortar/integrator.hpp"
 #include "mortar/surface.hpp"
+#include "random_parameters.hpp"
 #include "vuinteraction.h"
 
 static_assert(sizeof(mj_real) == sizeof(double), "the property tests call the double-precision routine");
@@ -114,33 +115,11 @@ inline int scaled(int n) { return std::max(1, int(std::lround(n * property_scale
 // under ASan + UBSan.
 inline int implicit_sets(int n) { return property_scale() < 1 ? 1 : n; }
 
-inline double log_uniform(std::mt19937& rng, double lo, double hi) {
-  return std::exp(std::uniform_real_distribution<double>(std::log(lo), std::log(hi))(rng));
-}
-inline double uniform(std::mt19937& rng, double lo, double hi) {
-  return std::uniform_real_distribution<double>(lo, hi)(rng);
-}
-
-// A random valid parameter set over and beyond Table 1 (snap-back included:
+// The population of tests/support/random_parameters.hpp (snap-back included:
 // ft0^2/GIC up to several kn), as props(1..14).
-inline mortar::Parameters random_parameters(std::mt19937& rng) {
-  mortar::Parameters p;
-  p.kn = log_uniform(rng, 20, 5000);
-  p.ks = p.kn * uniform(rng, 0.2, 0.8);
-  p.ft0 = log_uniform(rng, 0.05, 3);
-  p.phi0 = uniform(rng, 20, 50);
-  p.phir = p.phi0 * uniform(rng, 0.6, 1.0);
-  p.c0 = p.ft0 * std::tan(p.phi0 * M_PI / 180) * uniform(rng, 1.05, 4);
-  p.GIC = log_uniform(rng, 1e-4, 0.05);
-  p.GIIC = p.GIC * uniform(rng, 2, 25);
-  p.m = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
-  p.psi0 = uniform(rng, 0, 35);
-  p.psir = p.psi0 * uniform(rng, 0, 1);
-  p.n = uniform(rng, 0, 1) < 0.2 ? 0.0 : log_uniform(rng, 10, 2e4);
-  p.bn = uniform(rng, 0, 15);
-  p.bs = uniform(rng, 0, 6);
-  return p;
-}
+using mj_test::log_uniform;
+using mj_test::random_parameters;
+using mj_test::uniform;
 
 // props(1..14), then props(15) = scheme when not the default.
 inline std::vector<double> props_of(const mortar::Parameters& p, mortar::Scheme scheme = mortar::Scheme::modified_euler) {
