@@ -28,8 +28,8 @@ if [ "$what" = all ] || [ "$what" = address ]; then
   cmake --build build-asan -j"$jobs"
   export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1:check_initialization_order=1:strict_init_order=1}
   export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-  # The property tests at a quarter of their parameter sets (tests/property/abi_block.hpp).
-  export MJ_PROPERTY_SCALE=${MJ_PROPERTY_SCALE:-0.25}
+  # The property tests at a tenth of their parameter sets (tests/property/abi_block.hpp).
+  export MJ_PROPERTY_SCALE=${MJ_PROPERTY_SCALE:-0.1}
   # Excluded, for time only: "law:Implicit, invariant 10" makes 1.4 million
   # Catch2 assertions inside its loops, which cost about 10 minutes under
   # ASan on 2 cores (21 s in the plain build). The implicit scheme on random
