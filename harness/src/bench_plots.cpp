@@ -9,6 +9,7 @@
 
 #include "checks.hpp"
 #include "input_error.hpp"
+#include "plots.hpp"
 
 namespace mortar::harness {
 
@@ -46,15 +47,6 @@ const char* outcome_colour(Outcome o) {
     case Outcome::non_finite: return "#000000";
   }
   return "#FFFFFF";
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') q += '\\';
-    q += c;
-  }
-  return q + "\"";
 }
 
 // Text for gnuplot's enhanced mode: path ids keep their underscores.

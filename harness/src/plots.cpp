@@ -9,8 +9,6 @@
 
 namespace mortar::harness {
 
-namespace {
-
 std::string quoted(const std::string& s) {
   std::string q = "\"";
   for (char c : s) {
@@ -19,6 +17,8 @@ std::string quoted(const std::string& s) {
   }
   return q + "\"";
 }
+
+namespace {
 
 // Line colours that stay apart for colour-blind readers (Okabe-Ito).
 const char* colour(size_t i) {

@@ -22,6 +22,9 @@ std::string write_plot_script(const std::string& out_dir, const SeriesSpec& seri
                               const std::vector<PlotCase>& cases);
 
 // True when a gnuplot executable is on the PATH.
+// s as a gnuplot string literal: in double quotes, with " and \\ escaped.
+std::string quoted(const std::string& s);
+
 bool gnuplot_available();
 
 // Runs gnuplot on the script inside out_dir; returns false (and the error
