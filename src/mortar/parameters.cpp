@@ -148,6 +148,17 @@ ValidationError read_props(const double* props, int n_props, Parameters& p, Cont
   return validate(c);
 }
 
+std::array<double, kPropsWithControls> to_props(const Parameters& p, const Controls& c) {
+  std::array<double, kPropsWithControls> props{};
+  for (int i = 0; i < kParameterCount; ++i) props[i] = parameter_at(p, i);
+  props[14] = static_cast<double>(static_cast<int>(c.scheme));
+  props[15] = c.stol;
+  props[16] = c.ftol;
+  props[17] = c.max_substeps;
+  props[18] = c.min_substep;
+  return props;
+}
+
 Model make_model(const Parameters& p, const Controls& c) {
   Model m;
   m.p = p;

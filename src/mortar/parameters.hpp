@@ -79,6 +79,12 @@ ValidationError validate(const Controls& c);
 // first violation (including too few props); does not throw.
 ValidationError read_props(const double* props, int n_props, Parameters& p, Controls& c);
 
+// props(1..19) of a parameter set and its controls, every control written
+// out (read_props of them gives p and c back). props(20), the adapters'
+// shear-stress sign, is not the law's and is left to the caller.
+inline constexpr int kPropsWithControls = kParameterCount + 5;
+std::array<double, kPropsWithControls> to_props(const Parameters& p, const Controls& c = Controls{});
+
 // Parameters plus the values derived from them once (tangents of the angles,
 // alpha and beta of the undamaged surface), and the integration controls.
 struct Model {

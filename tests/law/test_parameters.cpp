@@ -97,3 +97,23 @@ TEST_CASE("Parameters: alpha and beta at s = 1 satisfy Eq. 3", "[parameters]") {
   CHECK((M.beta0 - M.alpha0) / std::tan(40.97 * M_PI / 180) == Approx(0.62).epsilon(1e-14));
   CHECK(M.alpha0 > 0);
 }
+
+TEST_CASE("Parameters: to_props writes props 1-19 that read_props reads back", "[parameters]") {
+  const Parameters p = almeida_m34();
+  Controls c;
+  c.scheme = Scheme::implicit;
+  c.stol = 3e-6;
+  c.ftol = 2e-9;
+  c.max_substeps = 777;
+  c.min_substep = 5e-5;
+  const auto props = to_props(p, c);
+  Parameters q;
+  Controls d;
+  REQUIRE(read_props(props.data(), kPropsWithControls, q, d).ok());
+  for (int i = 0; i < kParameterCount; ++i) CHECK(parameter_at(q, i) == parameter_at(p, i));
+  CHECK(d.scheme == c.scheme);
+  CHECK(d.stol == c.stol);
+  CHECK(d.ftol == c.ftol);
+  CHECK(d.max_substeps == c.max_substeps);
+  CHECK(d.min_substep == c.min_substep);
+}
