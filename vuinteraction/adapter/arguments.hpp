@@ -1,5 +1,5 @@
-// The checks every entry point makes before the law runs: the array sizes it
-// was given (nDir, nNodState, the state count, nProps) and props(1..20) read
+// The checks every entry point makes before the law runs: the array sizes its
+// caller declared (nDir, nNodState, the state count, nProps) and props(1..20) read
 // into the law's model and the adapter's shear sign (docs/abaqus.md, "props";
 // docs/model.md 2 for the law's rules, enforced by mortar::read_props).
 #pragma once
