@@ -99,19 +99,12 @@ class Comparison {
   void compare(const RunSetup& setup, const Record& r) {
     const Expected e = expected_call(setup, r);
     const mortar::Parameters& p = setup.model.p;
-    char name[32];
-    for (int i = 0; i < 3; ++i) {
-      std::snprintf(name, sizeof name, "stress(%d)", i + 1);
-      agreement_.check(r, name, r.stress[i], e.stress[i], p.ft0);
-    }
+    agreement_.check_each(r, "stress(%d)", r.stress, e.stress, 3, [&](int) { return p.ft0; });
     agreement_.check(r, "sed", r.sed, e.sed, p.GIC);
     agreement_.check(r, "spd", r.spd, e.spd, p.GIC);
     for (double zero : {r.sfd, r.scd, r.svd, r.flux_slv, r.flux_mst})
       agreement_.check(r, "sfd/scd/svd/flux", zero, 0.0, 0.0);
-    for (int i = 0; i < kStates; ++i) {
-      std::snprintf(name, sizeof name, "SDV %d", i + 1);
-      agreement_.check(r, name, r.end[i], e.end[i], state_scale(i, p));
-    }
+    agreement_.check_each(r, "SDV %d", r.end, e.end, kStates, [&](int i) { return state_scale(i, p); });
     ++records_;
     if (r.spd > 0) ++dissipating_;
     if (r.end[slot::damage_n] > 0.99) ++separated_;

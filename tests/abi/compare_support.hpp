@@ -77,6 +77,18 @@ class Agreement {
                   what, got, expected);
   }
 
+  // check() of got[i] against expected[i], i < n, each named by `format`
+  // with i + 1 (e.g. "SDV %d") and floored by scale(i).
+  template <class Record, class Scale>
+  void check_each(const Record& r, const char* format, const double* got, const double* expected, int n,
+                  Scale scale) {
+    char name[40];
+    for (int i = 0; i < n; ++i) {
+      std::snprintf(name, sizeof name, format, i + 1);
+      check(r, name, got[i], expected[i], scale(i));
+    }
+  }
+
   double rtol() const { return rtol_; }
   double worst() const { return worst_; }
   long values() const { return values_; }

@@ -82,11 +82,8 @@ class Comparison {
   void compare(const RunSetup& setup, const Record& r) {
     const Expected e = expected_call(setup, r);
     const mortar::Parameters& p = setup.model.p;
+    agreement_.check_each(r, "STRESS(%d)", r.stress, e.stress, 3, [&](int) { return p.ft0; });
     char name[40];
-    for (int i = 0; i < 3; ++i) {
-      std::snprintf(name, sizeof name, "STRESS(%d)", i + 1);
-      agreement_.check(r, name, r.stress[i], e.stress[i], p.ft0);
-    }
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i) {
         std::snprintf(name, sizeof name, "DDSDDR(%d,%d)", i + 1, j + 1);
@@ -95,10 +92,7 @@ class Comparison {
     agreement_.check(r, "SED", r.sed, e.sed, p.GIC);
     agreement_.check(r, "SPD", r.spd, e.spd, p.GIC);
     for (double zero : {r.sfd, r.svd, r.scd}) agreement_.check(r, "SFD/SVD/SCD", zero, 0.0, 0.0);
-    for (int i = 0; i < kStates; ++i) {
-      std::snprintf(name, sizeof name, "SDV %d", i + 1);
-      agreement_.check(r, name, r.end[i], e.end[i], 1e-3);
-    }
+    agreement_.check_each(r, "SDV %d", r.end, e.end, kStates, [](int) { return 1e-3; });
     ++records_;
     if (r.spd > 0) ++dissipating_;
     if (r.end[slot::damage_n] > 0.9) ++damaged_;

@@ -278,21 +278,26 @@ TEST_CASE("UINTER: bad arguments and properties are reported and coded in SDV 21
     CHECK(err.text().find("props(20) is 0 (default, = +1), -1 or +1") != std::string::npos);
     CHECK(pt.out_statev[slot::status] == -4);
   }
-  SECTION("NSTATV") {
-    Point pt(3, paper_props(mortar::testing::almeida_m15()));
-    pt.n_states = 21;
-    StderrCapture err;
-    pt.call();
-    CHECK(err.text().find("argument NSTATV = 21") != std::string::npos);
-    CHECK(pt.out_statev[slot::status] == -2);
-  }
-  SECTION("NDIR") {
-    Point pt(3, paper_props(mortar::testing::almeida_m15()));
-    pt.n_dir = 4;
-    StderrCapture err;
-    pt.call();
-    CHECK(err.text().find("argument NDIR = 4") != std::string::npos);
-    CHECK(pt.out_statev[slot::status] == -1);
+  SECTION("the array sizes") {
+    struct Case {
+      const char* message;
+      int code;
+      void (*spoil)(Point&);
+    };
+    const Case cases[] = {
+        {"argument NSTATV = 21", -2, [](Point& pt) { pt.n_states = 21; }},
+        {"argument NDIR = 4", -1, [](Point& pt) { pt.n_dir = 4; }},
+        {"argument NPROPS = 13", -3, [](Point& pt) { pt.props.resize(13); }},
+    };
+    for (const Case& c : cases) {
+      Point pt(3, paper_props(mortar::testing::almeida_m15()));
+      c.spoil(pt);
+      StderrCapture err;
+      pt.call();
+      INFO(c.message);
+      CHECK(err.text().find(c.message) != std::string::npos);
+      CHECK(pt.out_statev[slot::status] == c.code);
+    }
   }
 }
 
