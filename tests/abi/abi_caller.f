@@ -323,7 +323,7 @@ c        the increase of penetration here (the adapter ignores it).
       return
       end
 c
-c     Block invariance (MODEL.md section 8, invariant 8): np points as
+c     Block invariance (docs/model.md 10, invariant 8): np points as
 c     (a) one block, (b) np blocks of one point, (c) one block holding
 c     the points in shuffled order. Counts the values that differ.
       subroutine invar(props, nbad)
