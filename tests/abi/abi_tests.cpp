@@ -13,6 +13,8 @@
 #include <catch2/catch.hpp>
 
 #include "abi_support.hpp"
+#include "adapter/arguments.hpp"
+#include "adapter/report.hpp"
 #include "adapter/status_codes.hpp"
 #include "mortar/integrator.hpp"
 #include "paper_sets.hpp"
@@ -477,6 +479,29 @@ TEST_CASE("SDV 21 reads back: the law's names for its codes, the adapter's for i
   CHECK(std::string(status_meaning(kBadProperty)).find("a property breaks its rule") == 0);
   CHECK(std::string(status_meaning(kBadNodeStates)) == "nNodState < 1");
   CHECK(std::string(status_meaning(kInternalError)) == "the routine's internal error");
+}
+
+TEST_CASE("messages name the interaction: trailing blanks cut, a hidden length beyond 1..80 read as 80", "[abi][errors]") {
+  using mj_adapter::make_caller;
+  const Name80 name("JOINT-A");
+  auto named = [](const mj_adapter::Caller& c) { return std::string(c.name, c.name_length); };
+  CHECK(named(make_caller("VUINTER", name.text, 80)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 0)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 1 << 20)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 3)) == "JOI");
+  CHECK(named(make_caller("VUINTER", Name80("").text, 80)).empty());
+  CHECK(named(make_caller("VUINTER", nullptr, 80)) == "?");
+}
+
+TEST_CASE("the first array size that breaks its rule is the one reported", "[abi][errors]") {
+  const mj_adapter::ArgumentNames names = {"nDir", "nDir is 2 (2D) or 3 (3D)", "nStates", "nProps"};
+  using mj_adapter::check_counts;
+  CHECK(check_counts({1, 0, 0, 0}, names).code == mj_adapter::kBadDirections);
+  CHECK(check_counts({3, 0, 0, 0}, names).code == mj_adapter::kBadNodeStates);
+  CHECK(check_counts({3, 1, 22, 0}, names).code == mj_adapter::kBadStateCount);
+  CHECK(std::string(check_counts({3, 1, 22, 0}, names).argument) == "nStates");
+  CHECK(check_counts({2, 1, 23, 13}, names).code == mj_adapter::kBadPropCount);
+  CHECK(check_counts({2, 1, 23, 14}, names).code == 0);
 }
 
 TEST_CASE("VUINTER reports bad arguments too", "[abi][errors]") {
