@@ -21,7 +21,7 @@
  * length, clamped to 80, to trim the name in messages.
  *
  * What the routines do with the arguments (signs, state layout, energies,
- * errors) is documented in vuinteraction.cpp and docs/abaqus.md.
+ * errors) is documented in adapter/explicit_block.hpp and docs/abaqus.md.
  */
 #ifndef MJ_VUINTERACTION_H
 #define MJ_VUINTERACTION_H
@@ -140,7 +140,7 @@ void vuinter_(
  * releases (with AMKI, AMSKI and FREQR; older releases lack them); order
  * [verified] against public working UINTER code, see docs/abaqus.md
  * "Using it in Abaqus/Standard". What the routine does with the arguments is
- * documented in uinter.cpp and docs/abaqus.md. */
+ * documented in adapter/standard_point.hpp and docs/abaqus.md. */
 void uinter_(
     /* to be defined */
     double* stress,       /* (NDIR) pressure positive, then shear; in: start of increment */

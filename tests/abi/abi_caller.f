@@ -181,25 +181,16 @@ c     state(1..23). Missing third components are written as 0.
       include 'vaba_param.inc'
       parameter (nstate = 23)
       character*4 tag
-      dimension dd(ndir), st0(nstate), stress(ndir), st1(nstate)
-      zero = 0
-      write (iout, 900) tag, istep, k, ndir, pen,
-     *   (dd(i), i=1,ndir), (zero, i=ndir+1,3),
-     *   (st0(i), i=1,nstate),
-     *   (stress(i), i=1,ndir), (zero, i=ndir+1,3),
-     *   sed, spd, sfd, scd, svd, fluxs, fluxm,
-     *   (st1(i), i=1,nstate)
-  900 format (a4, 1x, i4, 1x, i4, 1x, i1, 60(1x, es24.16e3))
-      return
-      end
-c
-c     Writes the props of a run: PROPS tag nprops values.
-      subroutine wprops(iout, tag, nprops, props)
-      include 'vaba_param.inc'
-      character*4 tag
-      dimension props(nprops)
-      write (iout, 900) 'PROPS', tag, nprops, (props(i), i=1,nprops)
-  900 format (a5, 1x, a4, 1x, i2, 20(1x, es24.16e3))
+      dimension dd(ndir), st0(nstate), stress(ndir), st1(nstate),
+     *   v(60)
+      v = 0
+      v(1) = pen
+      v(2:1+ndir) = dd
+      v(5:27) = st0
+      v(28:27+ndir) = stress
+      v(31:37) = (/ sed, spd, sfd, scd, svd, fluxs, fluxm /)
+      v(38:60) = st1
+      call wcall(iout, tag, istep, k, ndir, 60, v)
       return
       end
 c
@@ -323,7 +314,7 @@ c        the increase of penetration here (the adapter ignores it).
       return
       end
 c
-c     Block invariance (MODEL.md section 8, invariant 8): np points as
+c     Block invariance (docs/model.md 10, invariant 8): np points as
 c     (a) one block, (b) np blocks of one point, (c) one block holding
 c     the points in shuffled order. Counts the values that differ.
       subroutine invar(props, nbad)

@@ -11,21 +11,19 @@
 // double, two float ulps in single, each with an absolute floor of the same
 // relative size times the scale of the quantity (stress ft0, energy GIC,
 // displacement ft0/kn).
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
 #include <sstream>
 #include <string>
-#include <vector>
 
-#include "mortar/integrator.hpp"
+#include "compare_support.hpp"
 
 namespace {
 
-constexpr int kStates = mortar::kStateCount;
+using namespace mj_abi_compare;
 namespace slot = mortar::slot;
+
+// Abaqus/Explicit: props(15) = 0 is modified Euler, props(20) = 0 is -1.
+constexpr ProductDefaults kExplicitDefaults = {mortar::Scheme::modified_euler, -1.0};
 
 // One recorded call of one point (field order as abi_caller's `record`).
 struct Record {
@@ -36,11 +34,6 @@ struct Record {
   double end[kStates] = {};
 };
 
-struct RunSetup {
-  mortar::Model model;
-  double shear_sign = -1;
-};
-
 struct Expected {
   double stress[3] = {}, sed = 0, spd = 0, end[kStates] = {};
 };
@@ -48,28 +41,12 @@ struct Expected {
 bool read_record(const std::string& line, Record& r) {
   std::istringstream in(line);
   in >> r.tag >> r.step >> r.point >> r.n_dir >> r.penetration;
-  for (double& v : r.dd) in >> v;
-  for (double& v : r.start) in >> v;
-  for (double& v : r.stress) in >> v;
+  read_values(in, r.dd);
+  read_values(in, r.start);
+  read_values(in, r.stress);
   in >> r.sed >> r.spd >> r.sfd >> r.scd >> r.svd >> r.flux_slv >> r.flux_mst;
-  for (double& v : r.end) in >> v;
+  read_values(in, r.end);
   return bool(in);
-}
-
-bool read_setup(const std::string& line, std::string& tag, RunSetup& setup) {
-  std::istringstream in(line);
-  std::string word;
-  int n = 0;
-  in >> word >> tag >> n;
-  std::vector<double> props(n);
-  for (double& v : props) in >> v;
-  if (!in) return false;
-  mortar::Parameters p;
-  mortar::Controls c;
-  if (!mortar::read_props(props.data(), std::min(n, 19), p, c).ok()) return false;
-  setup.model = mortar::make_model(p, c);
-  setup.shear_sign = (n >= 20 && props[19] != 0) ? props[19] : -1.0;
-  return true;
 }
 
 // The documented mapping, from scratch: the first call (SDV 23 = 0) stores the
@@ -117,39 +94,17 @@ double state_scale(int i, const mortar::Parameters& p) {
 
 class Comparison {
  public:
-  explicit Comparison(bool single) : single_(single), rtol_(single ? 2.0 * 0x1p-23 : 1e-12) {}
-
-  // Compares one value; `scale` sets the absolute floor.
-  void check(const Record& r, const char* what, double got, double expected, double scale) {
-    if (single_) expected = double(float(expected));
-    const double tol = rtol_ * (std::abs(expected) + scale);
-    const double dev = std::abs(got - expected);
-    worst_ = std::max(worst_, dev / tol);
-    ++values_;
-    if (dev <= tol) return;
-    if (++mismatches_ <= 20)
-      std::printf("MISMATCH %s step %d point %d %s: got %.17g expected %.17g\n", r.tag.c_str(), r.step, r.point,
-                  what, got, expected);
-  }
-  void check_exact(const Record& r, const char* what, double got, double expected) {
-    check(r, what, got, expected, 0.0);
-  }
+  explicit Comparison(bool single) : agreement_(single ? 2.0 * 0x1p-23 : 1e-12, single) {}
 
   void compare(const RunSetup& setup, const Record& r) {
     const Expected e = expected_call(setup, r);
     const mortar::Parameters& p = setup.model.p;
-    char name[32];
-    for (int i = 0; i < 3; ++i) {
-      std::snprintf(name, sizeof name, "stress(%d)", i + 1);
-      check(r, name, r.stress[i], e.stress[i], p.ft0);
-    }
-    check(r, "sed", r.sed, e.sed, p.GIC);
-    check(r, "spd", r.spd, e.spd, p.GIC);
-    for (double zero : {r.sfd, r.scd, r.svd, r.flux_slv, r.flux_mst}) check_exact(r, "sfd/scd/svd/flux", zero, 0.0);
-    for (int i = 0; i < kStates; ++i) {
-      std::snprintf(name, sizeof name, "SDV %d", i + 1);
-      check(r, name, r.end[i], e.end[i], state_scale(i, p));
-    }
+    agreement_.check_each(r, "stress(%d)", r.stress, e.stress, 3, [&](int) { return p.ft0; });
+    agreement_.check(r, "sed", r.sed, e.sed, p.GIC);
+    agreement_.check(r, "spd", r.spd, e.spd, p.GIC);
+    for (double zero : {r.sfd, r.scd, r.svd, r.flux_slv, r.flux_mst})
+      agreement_.check(r, "sfd/scd/svd/flux", zero, 0.0, 0.0);
+    agreement_.check_each(r, "SDV %d", r.end, e.end, kStates, [&](int i) { return state_scale(i, p); });
     ++records_;
     if (r.spd > 0) ++dissipating_;
     if (r.end[slot::damage_n] > 0.99) ++separated_;
@@ -158,19 +113,17 @@ class Comparison {
 
   int finish() const {
     std::printf("%d records, %ld values compared, %ld mismatches, worst deviation %.3g of the tolerance "
-                "(rtol %.3g)\n", records_, values_, mismatches_, worst_, rtol_);
+                "(rtol %.3g)\n", records_, agreement_.values(), agreement_.mismatches(), agreement_.worst(),
+                agreement_.rtol());
     std::printf("%d records dissipated energy, %d had d_n > 0.99, %d carried shear with d_s > 0\n", dissipating_,
                 separated_, sheared_);
     const bool exercised = records_ == 4 * 8 * 81 && dissipating_ > 0 && separated_ > 0 && sheared_ > 0;
     if (!exercised) std::printf("the records do not cover the expected runs and regimes\n");
-    return (mismatches_ == 0 && exercised) ? 0 : 1;
+    return (agreement_.mismatches() == 0 && exercised) ? 0 : 1;
   }
 
  private:
-  bool single_;
-  double rtol_;
-  double worst_ = 0;
-  long values_ = 0, mismatches_ = 0;
+  Agreement agreement_;
   int records_ = 0, dissipating_ = 0, separated_ = 0, sheared_ = 0;
 };
 
@@ -181,31 +134,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: abi_compare <records-file> <single|double>\n");
     return 2;
   }
-  std::ifstream in(argv[1]);
-  if (!in) {
-    std::fprintf(stderr, "abi_compare: cannot read %s\n", argv[1]);
-    return 2;
-  }
   Comparison cmp(std::string(argv[2]) == "single");
-  std::map<std::string, RunSetup> setups;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.compare(0, 5, "PROPS") == 0) {
-      std::string tag;
-      RunSetup s;
-      if (!read_setup(line, tag, s)) {
-        std::fprintf(stderr, "abi_compare: bad props line: %s\n", line.c_str());
-        return 1;
-      }
-      setups[tag] = s;
-      continue;
-    }
-    Record r;
-    if (!read_record(line, r) || !setups.count(r.tag)) {
-      std::fprintf(stderr, "abi_compare: bad record: %s\n", line.c_str());
-      return 1;
-    }
-    cmp.compare(setups[r.tag], r);
-  }
-  return cmp.finish();
+  const int rc = replay_records<Record>("abi_compare", argv[1], kExplicitDefaults, read_record,
+                                        [&](const RunSetup& setup, const Record& r) { cmp.compare(setup, r); });
+  return rc != 0 ? rc : cmp.finish();
 }

@@ -1,12 +1,9 @@
 // Tests of the Abaqus/Explicit adapters through their C ABI, compiled once per
-// precision (mj_real from vuinteraction.h): the mapping of MODEL.md onto
-// Abaqus's arguments, the error reports, concurrency and block invariance.
-#include <unistd.h>
-
+// precision (mj_real from vuinteraction.h): the mapping of the law's signs and
+// state (docs/model.md 1 and 3) onto Abaqus's arguments (docs/abaqus.md), the
+// error reports, concurrency and block invariance (docs/model.md 10).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -15,11 +12,19 @@
 
 #include <catch2/catch.hpp>
 
+#include "abi_support.hpp"
+#include "adapter/arguments.hpp"
+#include "adapter/report.hpp"
+#include "adapter/status_codes.hpp"
 #include "mortar/integrator.hpp"
 #include "paper_sets.hpp"
+#include "stderr_capture.hpp"
 #include "vuinteraction.h"
 
 namespace {
+
+using mj_abi_test::Name80;
+using mj_test::StderrCapture;
 
 using Real = mj_real;
 namespace slot = mortar::slot;
@@ -30,20 +35,8 @@ constexpr double kRtol = kDouble ? 1e-12 : 1e-6;
 
 // Almeida M15 as props(1..14), then optionally controls and the shear sign.
 std::vector<Real> paper_props(int n_props = 14) {
-  const mortar::Parameters p = mortar::testing::almeida_m15();
-  std::vector<Real> props(n_props, Real(0));
-  for (int i = 0; i < std::min(n_props, 14); ++i) props[i] = Real(mortar::parameter_at(p, i));
-  return props;
+  return mj_abi_test::props_of<Real>(mortar::testing::almeida_m15(), n_props);
 }
-
-// A CHARACTER*80 name as Fortran passes it: blank padded, no terminator.
-struct Name80 {
-  char text[80];
-  explicit Name80(const char* s) {
-    std::memset(text, ' ', sizeof text);
-    std::memcpy(text, s, std::min(std::strlen(s), sizeof text));
-  }
-};
 
 // Everything one VUINTERACTION call takes, with neutral values for the
 // arguments the law does not read. Arrays persist across calls.
@@ -117,32 +110,6 @@ struct ContactPair {
              local_dir.data(), props.data(), per_node.data(), per_node.data(), per_node.data(), per_node.data(),
              per_node.data(), one.data(), one.data(), one.data(), one.data(), 80, 80, 80);
   }
-};
-
-// Captures what is written to file descriptor 2 while it lives.
-class StderrCapture {
- public:
-  StderrCapture() : file_(std::tmpfile()), saved_(dup(2)) {
-    std::fflush(stderr);
-    dup2(fileno(file_), 2);
-  }
-  ~StderrCapture() {
-    std::fflush(stderr);
-    dup2(saved_, 2);
-    close(saved_);
-    std::fclose(file_);
-  }
-  std::string text() {
-    std::fflush(stderr);
-    std::string out;
-    std::rewind(file_);
-    for (int c; (c = std::fgetc(file_)) != EOF;) out += char(c);
-    return out;
-  }
-
- private:
-  std::FILE* file_;
-  int saved_;
 };
 
 bool all_finite(const std::vector<Real>& v) {
@@ -493,6 +460,48 @@ TEST_CASE("invalid properties and controls are reported with name, value and rul
     parts.push_back("interaction 'JOINT-A'");
     check_rejected(err.text(), parts, gc, -4, stress_in);
   }
+}
+
+TEST_CASE("SDV 21 reads back: the law's names for its codes, the adapter's for its own", "[abi][errors]") {
+  using namespace mj_adapter;
+  // The numbers docs/abaqus.md documents and the harness reads.
+  CHECK(kBadDirections == -1);
+  CHECK(kBadStateCount == -2);
+  CHECK(kBadPropCount == -3);
+  CHECK(kBadProperty == -4);
+  CHECK(kBadNodeStates == -5);
+  CHECK(kInternalError == -9);
+  for (int code = 0; code <= int(mortar::Failure::local_solve_failed); ++code)
+    CHECK(std::string(status_meaning(code)) == mortar::failure_name(static_cast<mortar::Failure>(code)));
+  CHECK(std::string(status_meaning(kBadDirections)) == "nDir is not 2 or 3");
+  CHECK(std::string(status_meaning(kBadStateCount)) == "fewer than 23 state variables");
+  CHECK(std::string(status_meaning(kBadPropCount)) == "fewer than 14 properties");
+  CHECK(std::string(status_meaning(kBadProperty)).find("a property breaks its rule") == 0);
+  CHECK(std::string(status_meaning(kBadNodeStates)) == "nNodState < 1");
+  CHECK(std::string(status_meaning(kInternalError)) == "the routine's internal error");
+}
+
+TEST_CASE("messages name the interaction: trailing blanks cut, a hidden length beyond 1..80 read as 80", "[abi][errors]") {
+  using mj_adapter::make_caller;
+  const Name80 name("JOINT-A");
+  auto named = [](const mj_adapter::Caller& c) { return std::string(c.name, c.name_length); };
+  CHECK(named(make_caller("VUINTER", name.text, 80)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 0)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 1 << 20)) == "JOINT-A");
+  CHECK(named(make_caller("VUINTER", name.text, 3)) == "JOI");
+  CHECK(named(make_caller("VUINTER", Name80("").text, 80)).empty());
+  CHECK(named(make_caller("VUINTER", nullptr, 80)) == "?");
+}
+
+TEST_CASE("the first array size that breaks its rule is the one reported", "[abi][errors]") {
+  const mj_adapter::ArgumentNames names = {"nDir", "nDir is 2 (2D) or 3 (3D)", "nStates", "nProps"};
+  using mj_adapter::check_counts;
+  CHECK(check_counts({1, 0, 0, 0}, names).code == mj_adapter::kBadDirections);
+  CHECK(check_counts({3, 0, 0, 0}, names).code == mj_adapter::kBadNodeStates);
+  CHECK(check_counts({3, 1, 22, 0}, names).code == mj_adapter::kBadStateCount);
+  CHECK(std::string(check_counts({3, 1, 22, 0}, names).argument) == "nStates");
+  CHECK(check_counts({2, 1, 23, 13}, names).code == mj_adapter::kBadPropCount);
+  CHECK(check_counts({2, 1, 23, 14}, names).code == 0);
 }
 
 TEST_CASE("VUINTER reports bad arguments too", "[abi][errors]") {

@@ -151,33 +151,18 @@ c     end state(1..23). Missing components are written as 0.
       parameter (nstate = 23)
       character*4 tag
       dimension rdisp(ndir), drdisp(ndir), st0(nstate), stress(ndir),
-     *   ddsddr(ndir,ndir), st1(nstate), d(3,3)
-      zero = 0
-      d = 0
-      do 20 j = 1, ndir
-         do 10 i = 1, ndir
-            d(i,j) = ddsddr(i,j)
-   10    continue
-   20 continue
-      write (iout, 900) tag, istep, k, ndir,
-     *   (rdisp(i), i=1,ndir), (zero, i=ndir+1,3),
-     *   (drdisp(i), i=1,ndir), (zero, i=ndir+1,3),
-     *   (st0(i), i=1,nstate),
-     *   (stress(i), i=1,ndir), (zero, i=ndir+1,3),
-     *   ((d(i,j), i=1,3), j=1,3),
-     *   sed, spd, sfd, svd, scd, pnewdt,
-     *   (st1(i), i=1,nstate)
-  900 format (a4, 1x, i4, 1x, i4, 1x, i1, 70(1x, es24.16e3))
-      return
-      end
-c
-c     Writes the props of a run: PROPS tag nprops values.
-      subroutine wprops(iout, tag, nprops, props)
-      include 'aba_param.inc'
-      character*4 tag
-      dimension props(nprops)
-      write (iout, 900) 'PROPS', tag, nprops, (props(i), i=1,nprops)
-  900 format (a5, 1x, a4, 1x, i2, 20(1x, es24.16e3))
+     *   ddsddr(ndir,ndir), st1(nstate), v(70)
+      v = 0
+      v(1:ndir) = rdisp
+      v(4:3+ndir) = drdisp
+      v(7:29) = st0
+      v(30:29+ndir) = stress
+      do 10 j = 1, ndir
+         v(33+3*(j-1):32+3*(j-1)+ndir) = ddsddr(:,j)
+   10 continue
+      v(42:47) = (/ sed, spd, sfd, svd, scd, pnewdt /)
+      v(48:70) = st1
+      call wcall(iout, tag, istep, k, ndir, 70, v)
       return
       end
 c

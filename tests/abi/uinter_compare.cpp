@@ -7,21 +7,20 @@
 // absolute floor of the same relative size times the scale of the quantity.
 //
 // Usage: uinter_compare <records-file>
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <map>
 #include <sstream>
 #include <string>
-#include <vector>
 
-#include "mortar/integrator.hpp"
+#include "compare_support.hpp"
 
 namespace {
 
-constexpr int kStates = mortar::kStateCount;
+using namespace mj_abi_compare;
 namespace slot = mortar::slot;
+
+// UINTER's defaults: props(15) = 0 -> implicit, props(20) = 0 -> +1.
+constexpr ProductDefaults kStandardDefaults = {mortar::Scheme::implicit, 1.0};
 
 struct Record {
   std::string tag;
@@ -31,40 +30,17 @@ struct Record {
   double end[kStates] = {};
 };
 
-struct RunSetup {
-  mortar::Model model;
-  double shear_sign = 1;
-};
-
 bool read_record(const std::string& line, Record& r) {
   std::istringstream in(line);
   in >> r.tag >> r.step >> r.point >> r.n_dir;
-  for (double& v : r.rdisp) in >> v;
-  for (double& v : r.drdisp) in >> v;
-  for (double& v : r.start) in >> v;
-  for (double& v : r.stress) in >> v;
-  for (double& v : r.ddsddr) in >> v;
+  read_values(in, r.rdisp);
+  read_values(in, r.drdisp);
+  read_values(in, r.start);
+  read_values(in, r.stress);
+  read_values(in, r.ddsddr);
   in >> r.sed >> r.spd >> r.sfd >> r.svd >> r.scd >> r.pnewdt;
-  for (double& v : r.end) in >> v;
+  read_values(in, r.end);
   return bool(in);
-}
-
-// UINTER's defaults: props(15) = 0 -> implicit, props(20) = 0 -> +1.
-bool read_setup(const std::string& line, std::string& tag, RunSetup& setup) {
-  std::istringstream in(line);
-  std::string word;
-  int n = 0;
-  in >> word >> tag >> n;
-  std::vector<double> props(n);
-  for (double& v : props) in >> v;
-  if (!in) return false;
-  mortar::Parameters p;
-  mortar::Controls c;
-  if (!mortar::read_props(props.data(), std::min(n, 19), p, c).ok()) return false;
-  if (n < 15 || props[14] == 0) c.scheme = mortar::Scheme::implicit;
-  setup.model = mortar::make_model(p, c);
-  setup.shear_sign = (n >= 20 && props[19] != 0) ? props[19] : 1.0;
-  return true;
 }
 
 struct Expected {
@@ -103,37 +79,20 @@ Expected expected_call(const RunSetup& setup, const Record& r) {
 
 class Comparison {
  public:
-  void check(const Record& r, const char* what, double got, double expected, double scale) {
-    const double tol = 1e-12 * (std::abs(expected) + scale);
-    const double dev = std::abs(got - expected);
-    worst_ = std::max(worst_, dev / tol);
-    ++values_;
-    if (dev <= tol) return;
-    if (++mismatches_ <= 20)
-      std::printf("MISMATCH %s step %d point %d %s: got %.17g expected %.17g\n", r.tag.c_str(), r.step, r.point,
-                  what, got, expected);
-  }
-
   void compare(const RunSetup& setup, const Record& r) {
     const Expected e = expected_call(setup, r);
     const mortar::Parameters& p = setup.model.p;
+    agreement_.check_each(r, "STRESS(%d)", r.stress, e.stress, 3, [&](int) { return p.ft0; });
     char name[40];
-    for (int i = 0; i < 3; ++i) {
-      std::snprintf(name, sizeof name, "STRESS(%d)", i + 1);
-      check(r, name, r.stress[i], e.stress[i], p.ft0);
-    }
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i) {
         std::snprintf(name, sizeof name, "DDSDDR(%d,%d)", i + 1, j + 1);
-        check(r, name, r.ddsddr[i + 3 * j], e.ddsddr[i + 3 * j], p.kn);
+        agreement_.check(r, name, r.ddsddr[i + 3 * j], e.ddsddr[i + 3 * j], p.kn);
       }
-    check(r, "SED", r.sed, e.sed, p.GIC);
-    check(r, "SPD", r.spd, e.spd, p.GIC);
-    for (double zero : {r.sfd, r.svd, r.scd}) check(r, "SFD/SVD/SCD", zero, 0.0, 0.0);
-    for (int i = 0; i < kStates; ++i) {
-      std::snprintf(name, sizeof name, "SDV %d", i + 1);
-      check(r, name, r.end[i], e.end[i], 1e-3);
-    }
+    agreement_.check(r, "SED", r.sed, e.sed, p.GIC);
+    agreement_.check(r, "SPD", r.spd, e.spd, p.GIC);
+    for (double zero : {r.sfd, r.svd, r.scd}) agreement_.check(r, "SFD/SVD/SCD", zero, 0.0, 0.0);
+    agreement_.check_each(r, "SDV %d", r.end, e.end, kStates, [](int) { return 1e-3; });
     ++records_;
     if (r.spd > 0) ++dissipating_;
     if (r.end[slot::damage_n] > 0.9) ++damaged_;
@@ -144,18 +103,17 @@ class Comparison {
 
   int finish() const {
     std::printf("%d records, %ld values compared, %ld mismatches, worst deviation %.3g of the tolerance\n", records_,
-                values_, mismatches_, worst_);
+                agreement_.values(), agreement_.mismatches(), agreement_.worst());
     std::printf("%d records dissipated energy, %d had d_n > 0.9, %d carried shear with d_s > 0, %d had a coupled "
                 "tangent\n",
                 dissipating_, damaged_, sheared_, coupled_);
     const bool exercised = records_ == 3 * 6 * 40 && dissipating_ > 0 && damaged_ > 0 && sheared_ > 0 && coupled_ > 0;
     if (!exercised) std::printf("the records do not cover the expected runs and regimes\n");
-    return (mismatches_ == 0 && exercised) ? 0 : 1;
+    return (agreement_.mismatches() == 0 && exercised) ? 0 : 1;
   }
 
  private:
-  double worst_ = 0;
-  long values_ = 0, mismatches_ = 0;
+  Agreement agreement_{1e-12, false};
   int records_ = 0, dissipating_ = 0, damaged_ = 0, sheared_ = 0, coupled_ = 0;
 };
 
@@ -166,31 +124,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: uinter_compare <records-file>\n");
     return 2;
   }
-  std::ifstream in(argv[1]);
-  if (!in) {
-    std::fprintf(stderr, "uinter_compare: cannot read %s\n", argv[1]);
-    return 2;
-  }
   Comparison cmp;
-  std::map<std::string, RunSetup> setups;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.compare(0, 5, "PROPS") == 0) {
-      std::string tag;
-      RunSetup s;
-      if (!read_setup(line, tag, s)) {
-        std::fprintf(stderr, "uinter_compare: bad props line: %s\n", line.c_str());
-        return 1;
-      }
-      setups[tag] = s;
-      continue;
-    }
-    Record r;
-    if (!read_record(line, r) || !setups.count(r.tag)) {
-      std::fprintf(stderr, "uinter_compare: bad record: %s\n", line.c_str());
-      return 1;
-    }
-    cmp.compare(setups[r.tag], r);
-  }
-  return cmp.finish();
+  const int rc = replay_records<Record>("uinter_compare", argv[1], kStandardDefaults, read_record,
+                                        [&](const RunSetup& setup, const Record& r) { cmp.compare(setup, r); });
+  return rc != 0 ? rc : cmp.finish();
 }

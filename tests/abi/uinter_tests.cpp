@@ -2,40 +2,32 @@
 // precision): DDSDDR against central differences of STRESS with respect to
 // RDISP, calls that Abaqus repeats within an increment, the defaults, linear
 // perturbation, unpaired points, the cut-back request and the error reports.
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include <catch2/catch.hpp>
 
+#include "abi_support.hpp"
 #include "mortar/integrator.hpp"
 #include "paper_sets.hpp"
+#include "stderr_capture.hpp"
 #include "vuinteraction.h"
 
 namespace {
+
+using mj_abi_test::Name80;
+using mj_test::StderrCapture;
 
 namespace slot = mortar::slot;
 constexpr int kStates = mortar::kStateCount;
 
 std::vector<double> paper_props(const mortar::Parameters& p, int n_props = 14) {
-  std::vector<double> props(n_props, 0.0);
-  for (int i = 0; i < std::min(n_props, 14); ++i) props[i] = mortar::parameter_at(p, i);
-  return props;
+  return mj_abi_test::props_of<double>(p, n_props);
 }
-
-struct Name80 {
-  char text[80];
-  explicit Name80(const char* s) {
-    std::memset(text, ' ', sizeof text);
-    std::memcpy(text, s, std::min(std::strlen(s), sizeof text));
-  }
-};
 
 // One contact point as Abaqus/Standard passes it. `statev` is the state at
 // the start of the increment (the caller's copy); call() works on a copy of
@@ -79,31 +71,6 @@ struct Point {
   // Commits the increment (Abaqus: converged).
   void commit() { statev = out_statev; }
   double D(int i, int j) const { return ddsddr[i + j * n_dir]; }
-};
-
-class StderrCapture {
- public:
-  StderrCapture() : file_(std::tmpfile()), saved_(dup(2)) {
-    std::fflush(stderr);
-    dup2(fileno(file_), 2);
-  }
-  ~StderrCapture() {
-    std::fflush(stderr);
-    dup2(saved_, 2);
-    close(saved_);
-    std::fclose(file_);
-  }
-  std::string text() {
-    std::fflush(stderr);
-    std::string out;
-    std::rewind(file_);
-    for (int c; (c = std::fgetc(file_)) != EOF;) out += char(c);
-    return out;
-  }
-
- private:
-  std::FILE* file_;
-  int saved_;
 };
 
 // Drives a point along a straight path of RDISP in n converged increments.
@@ -311,21 +278,26 @@ TEST_CASE("UINTER: bad arguments and properties are reported and coded in SDV 21
     CHECK(err.text().find("props(20) is 0 (default, = +1), -1 or +1") != std::string::npos);
     CHECK(pt.out_statev[slot::status] == -4);
   }
-  SECTION("NSTATV") {
-    Point pt(3, paper_props(mortar::testing::almeida_m15()));
-    pt.n_states = 21;
-    StderrCapture err;
-    pt.call();
-    CHECK(err.text().find("argument NSTATV = 21") != std::string::npos);
-    CHECK(pt.out_statev[slot::status] == -2);
-  }
-  SECTION("NDIR") {
-    Point pt(3, paper_props(mortar::testing::almeida_m15()));
-    pt.n_dir = 4;
-    StderrCapture err;
-    pt.call();
-    CHECK(err.text().find("argument NDIR = 4") != std::string::npos);
-    CHECK(pt.out_statev[slot::status] == -1);
+  SECTION("the array sizes") {
+    struct Case {
+      const char* message;
+      int code;
+      void (*spoil)(Point&);
+    };
+    const Case cases[] = {
+        {"argument NSTATV = 21", -2, [](Point& pt) { pt.n_states = 21; }},
+        {"argument NDIR = 4", -1, [](Point& pt) { pt.n_dir = 4; }},
+        {"argument NPROPS = 13", -3, [](Point& pt) { pt.props.resize(13); }},
+    };
+    for (const Case& c : cases) {
+      Point pt(3, paper_props(mortar::testing::almeida_m15()));
+      c.spoil(pt);
+      StderrCapture err;
+      pt.call();
+      INFO(c.message);
+      CHECK(err.text().find(c.message) != std::string::npos);
+      CHECK(pt.out_statev[slot::status] == c.code);
+    }
   }
 }
 

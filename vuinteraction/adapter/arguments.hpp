@@ -1,0 +1,84 @@
+// The checks every entry point makes before the law runs: the array sizes its
+// caller declared (nDir, nNodState, the state count, nProps) and props(1..20) read
+// into the law's model and the adapter's shear sign (docs/abaqus.md, "props";
+// docs/model.md 2 for the law's rules, enforced by mortar::read_props).
+#pragma once
+
+#include <algorithm>
+
+#include "adapter/report.hpp"
+#include "adapter/status_codes.hpp"
+#include "mortar/integrator.hpp"
+
+namespace mj_adapter {
+
+// props(15..19) are the law's integration controls (mortar::read_props);
+// props(20) is the adapter's shear sign; anything after it is ignored.
+constexpr int kLawPropCount = mortar::kPropsWithControls;  // 19
+constexpr int kSchemeIndex = 14;                           // 0-based: props(15)
+constexpr int kShearSignIndex = 19;                        // 0-based: props(20)
+constexpr int kReadPropCount = 20;
+
+// Penetrations at or below this mean "no opposite surface found" (the manual
+// gives -1e36 for unpaired points in UINTER; VUINTER is assumed to do the same).
+constexpr double kUnpairedPenetration = -1e30;
+
+// The sizes of one call's arrays, as its caller declared them.
+struct Counts {
+  int n_dir = 0;
+  int n_node_states = 1;  // VUINTERACTION's nNodState; 1 where the routine has none
+  int n_states = 0;
+  int n_props = 0;
+};
+
+// How the routine's own argument list spells them (messages quote it).
+struct ArgumentNames {
+  const char* n_dir;
+  const char* n_dir_rule;
+  const char* n_states;
+  const char* n_props;
+};
+
+inline ArgumentError check_counts(const Counts& n, const ArgumentNames& names) {
+  if (n.n_dir != 2 && n.n_dir != 3) return {kBadDirections, names.n_dir, n.n_dir, names.n_dir_rule};
+  if (n.n_node_states < 1) return {kBadNodeStates, "nNodState", n.n_node_states, "nNodState >= 1"};
+  if (n.n_states < mortar::kStateCount)
+    return {kBadStateCount, names.n_states, n.n_states,
+            "at least 23 state variables (DEPVAR=23 on *SURFACE INTERACTION)"};
+  if (n.n_props < mortar::kParameterCount)
+    return {kBadPropCount, names.n_props, n.n_props, "at least the 14 parameters of Table 1 (PROPERTIES=14 or more)"};
+  return {};
+}
+
+// The law's model and the adapter's own control, read from props.
+struct Setup {
+  mortar::Model model;
+  double shear_sign = -1;  // Abaqus stress(2..nDir) = shear_sign * tau
+};
+
+// Per product: what a 0 (or missing) props(15) and props(20) mean.
+struct Defaults {
+  mortar::Scheme scheme;
+  double shear_sign;
+  const char* shear_sign_rule;
+};
+
+// props(1..min(n_props, 20)), in the routine's precision, into `setup`.
+template <class Real>
+mortar::ValidationError read_setup(const Real* props, int n_props, const Defaults& defaults, Setup& setup) {
+  double p[kReadPropCount] = {};
+  const int n = std::min(n_props, kReadPropCount);
+  for (int i = 0; i < n; ++i) p[i] = double(props[i]);
+  mortar::Parameters parameters;
+  mortar::Controls controls;
+  mortar::ValidationError e = mortar::read_props(p, std::min(n, kLawPropCount), parameters, controls);
+  if (!e.ok()) return e;
+  if (n <= kSchemeIndex || p[kSchemeIndex] == 0) controls.scheme = defaults.scheme;
+  const double sign = n > kShearSignIndex ? p[kShearSignIndex] : 0.0;
+  if (sign != 0 && sign != 1 && sign != -1) return {kShearSignIndex, "shear_sign", sign, defaults.shear_sign_rule};
+  setup.shear_sign = sign == 0 ? defaults.shear_sign : sign;
+  setup.model = mortar::make_model(parameters, controls);
+  return {};
+}
+
+}  // namespace mj_adapter

@@ -1,0 +1,241 @@
+// Abaqus/Explicit's block of points (VUINTERACTION and VUINTER) over the law,
+// in either precision (Real = mj_real); the law itself always runs in double
+// precision. This is where Abaqus/Explicit's conventions meet the law's
+// (docs/abaqus.md; law signs: docs/model.md 1):
+//
+//   normal   delta_n = (reference penetration) - penetration, the reference
+//            being the penetration at the point's first call (stored in SDV 22,
+//            SDV 23 = 1 once set). drDisp(1) is not used: its sign relative to
+//            the penetration is not pinned down by the manual.
+//   shear    the slips are the running sum of drDisp(2..nDir) (VUINTER:
+//            drdisp(2..nDir)); the first call contributes nothing, because the
+//            first call defines the zero (docs/model.md 1).
+//   stress   stress(1) = -sigma_n (Abaqus: pressure positive; law: tension
+//            positive); stress(2..nDir) = shear_sign * tau, shear_sign = -1
+//            unless props(20) = +1 (see docs/abaqus.md for why, and how to
+//            check it against a release).
+//   energies sed = elastic energy per unit area at the end of the increment;
+//            spd = increment of all inelastic energy of the law (plastic +
+//            damage + unilateral, so that the balance closes); sfd = scd =
+//            svd = 0; fluxes 0.
+//   state    the layout of mortar::slot (23 values; positions 1-14 as
+//            docs/model.md 3).
+//   failure  a point whose increment the law rejects keeps its start state
+//            with the law's positive Failure code in SDV 21; the first few
+//            are reported on stderr, and the analysis stops.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "adapter/arguments.hpp"
+#include "adapter/report.hpp"
+#include "mortar/integrator.hpp"
+
+namespace mj_adapter {
+
+// Point-failure messages printed per call before a summary line.
+constexpr int kMaxPointMessages = 5;
+
+// Abaqus/Explicit: props(15) = 0 is modified Euler, props(20) = 0 is -1.
+constexpr Defaults kExplicitDefaults = {mortar::Scheme::modified_euler, -1.0,
+                                        "props(20) is 0 (default, = -1), -1 or +1"};
+
+// The outputs a value of the caller's becomes when it is not finite.
+template <class Real>
+double finite_or_zero(Real x) {
+  return std::isfinite(double(x)) ? double(x) : 0.0;
+}
+
+template <class Real>
+bool all_finite(const Real* a, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!std::isfinite(double(a[i]))) return false;
+  return true;
+}
+
+// One call in the adapter's own terms: points k = 0 .. n_points-1, each
+// entry point filling in where its arguments lie.
+template <class Real>
+struct ExplicitBlock {
+  Counts counts;
+  int n_points = 0;
+  long state_stride = 0;           // distance between the states of points k and k+1
+  const Real* penetration = nullptr;
+  long penetration_stride = 1;     // 1 (VUINTERACTION) or nDir (VUINTER: rdisp(1,k))
+  const Real* d_rel_disp = nullptr;  // (nDir, n_points)
+  const int* node = nullptr;       // user node number of point k, for messages
+  long node_stride = 1;
+  const Real* props = nullptr;
+  Real *stress = nullptr, *state = nullptr, *sed = nullptr;
+  Real *spd = nullptr, *sfd = nullptr, *scd = nullptr, *svd = nullptr;
+  Real *flux_slv = nullptr, *flux_mst = nullptr;
+
+  // The arrays the routine writes, in the order both argument lists share.
+  void set_outputs(Real* stress_, Real* state_, Real* sed_, Real* spd_, Real* sfd_, Real* scd_, Real* svd_,
+                   Real* flux_slv_, Real* flux_mst_) {
+    stress = stress_;
+    state = state_;
+    sed = sed_;
+    spd = spd_;
+    sfd = sfd_;
+    scd = scd_;
+    svd = svd_;
+    flux_slv = flux_slv_;
+    flux_mst = flux_mst_;
+  }
+
+  Real* state_of(int k) const { return state + k * state_stride; }
+  Real* stress_of(int k) const { return stress + static_cast<long>(k) * counts.n_dir; }
+  const Real* d_rel_disp_of(int k) const { return d_rel_disp + static_cast<long>(k) * counts.n_dir; }
+  double penetration_of(int k) const { return double(penetration[k * penetration_stride]); }
+  int node_of(int k) const { return node ? node[k * node_stride] : 0; }
+
+  // A rejected block: finite outputs and the code in SDV 21 of every point,
+  // as far as the arrays the caller declared reach (nDir and the state count
+  // may be the bad arguments themselves).
+  void reject(int code) const {
+    for (int k = 0; k < n_points; ++k) {
+      if (counts.n_dir > 0) {
+        keep_start_outputs(k);
+      } else {
+        write_energies(k, finite_or_zero(sed[k]), 0.0);
+      }
+      if (counts.n_states > mortar::slot::status && counts.n_node_states >= 1)
+        state_of(k)[mortar::slot::status] = Real(code);
+    }
+  }
+
+  // Integrates every point; reports the failed ones. False when any failed.
+  bool integrate(const Caller& who, const Setup& setup) const {
+    int failures = 0;
+    for (int k = 0; k < n_points; ++k) {
+      const int failure = integrate_point(setup, k);
+      if (failure == 0) continue;
+      if (++failures <= kMaxPointMessages) report_point(who, k, failure);
+    }
+    if (failures > kMaxPointMessages) {
+      char what[160];
+      std::snprintf(what, sizeof what, "%d points of %d failed in this call (first %d shown)", failures, n_points,
+                    kMaxPointMessages);
+      report(who, what);
+    }
+    return failures == 0;
+  }
+
+ private:
+  void write_energies(int k, double sed_k, double spd_k) const {
+    sed[k] = Real(sed_k);
+    spd[k] = Real(spd_k);
+    sfd[k] = scd[k] = svd[k] = Real(0);
+    flux_slv[k] = flux_mst[k] = Real(0);
+  }
+
+  // Outputs of a point that is not integrated: stress and sed as they came
+  // in (made finite), no dissipation.
+  void keep_start_outputs(int k) const {
+    Real* s = stress_of(k);
+    for (int i = 0; i < counts.n_dir; ++i) s[i] = Real(finite_or_zero(s[i]));
+    write_energies(k, finite_or_zero(sed[k]), 0.0);
+  }
+
+  // A point that is not integrated: its start state (the caller's array,
+  // untouched but for the status), its stress and sed as they came in.
+  int reject_point(int k, mortar::Failure failure) const {
+    state_of(k)[mortar::slot::status] = Real(static_cast<int>(failure));
+    keep_start_outputs(k);
+    return static_cast<int>(failure);
+  }
+
+  void report_point(const Caller& who, int k, int failure) const {
+    char what[400];
+    std::snprintf(what, sizeof what,
+                  "point %d of %d (slave node %d): the law rejected the increment: %s (SDV 21 = %d); "
+                  "the point keeps its start state",
+                  k + 1, n_points, node_of(k), mortar::failure_name(static_cast<mortar::Failure>(failure)), failure);
+    report(who, what);
+  }
+
+  // The separation increment of point k (law signs), from its state and
+  // inputs. The first call defines the zero, so it contributes no increment;
+  // a non-finite penetration yields a non-finite increment, which the law
+  // rejects.
+  mortar::Vec3 separation_increment(int k, const Real* st, const mortar::State& s) const {
+    const double pen = penetration_of(k);
+    const bool first = st[mortar::slot::initialised] == Real(0);
+    if (first) return std::isfinite(pen) ? mortar::Vec3::Zero() : mortar::Vec3::Constant(NAN);
+    const double reference = double(st[mortar::slot::reference_penetration]);
+    const Real* dd = d_rel_disp_of(k);
+    return mortar::Vec3((reference - pen) - s.separation[0], double(dd[1]), counts.n_dir > 2 ? double(dd[2]) : 0.0);
+  }
+
+  // The adapter's own slots obey their rules: the open flag (SDV 15) and the
+  // initialised flag (SDV 23) are 0 or 1. The law reads the open flag as a
+  // bool, so a corrupted 0.5 or NaN would silently become "open".
+  static bool flags_valid(const Real* st) {
+    auto flag = [](Real x) { return x == Real(0) || x == Real(1); };
+    return flag(st[mortar::slot::open]) && flag(st[mortar::slot::initialised]);
+  }
+
+  // The law's traction in Abaqus's signs: pressure positive, shear_sign * tau.
+  static void abaqus_stress(const Setup& setup, const mortar::Vec3& traction, Real* stress_k) {
+    stress_k[0] = Real(-traction[0]);
+    stress_k[1] = Real(setup.shear_sign * traction[1]);
+    stress_k[2] = Real(setup.shear_sign * traction[2]);
+  }
+
+  // The law rejected the increment: it kept the start state; only the counts
+  // and the status change, and the start traction goes out if finite.
+  int keep_rejected(const Setup& setup, int k, Real* st, const mortar::State& s,
+                    const mortar::IncrementResult& r) const {
+    st[mortar::slot::substeps_accepted] = Real(s.substeps_accepted);
+    st[mortar::slot::substeps_rejected] = Real(s.substeps_rejected);
+    st[mortar::slot::status] = Real(s.status);
+    Real* stress_k = stress_of(k);
+    stress_k[0] = Real(-r.traction[0]);
+    for (int i = 1; i < counts.n_dir; ++i) stress_k[i] = Real(setup.shear_sign * r.traction[i]);
+    write_energies(k, r.elastic_energy, 0.0);
+    if (!all_finite(stress_k, counts.n_dir) || !std::isfinite(double(sed[k]))) keep_start_outputs(k);
+    return static_cast<int>(r.status.failure);
+  }
+
+  // Integrates point k and writes its outputs. Returns the law's Failure code.
+  int integrate_point(const Setup& setup, int k) const {
+    namespace slot = mortar::slot;
+    if (penetration_of(k) <= kUnpairedPenetration) {  // no opposite surface: no interaction
+      std::fill(stress_of(k), stress_of(k) + counts.n_dir, Real(0));
+      write_energies(k, 0.0, 0.0);
+      return 0;
+    }
+    Real* st = state_of(k);
+    if (!flags_valid(st)) return reject_point(k, mortar::Failure::invalid_state);
+    mortar::State s;
+    mortar::load_state(st, s);
+    const bool first = st[slot::initialised] == Real(0);
+    const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, separation_increment(k, st, s));
+    if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
+    // The law's result in this routine's precision: a double beyond a float's
+    // range would come back as infinity. Checked before anything is stored.
+    Real end[mortar::kStateCount];
+    std::copy(st, st + mortar::kStateCount, end);
+    mortar::store_state(s, end);
+    if (first) {
+      end[slot::reference_penetration] = Real(penetration_of(k));
+      end[slot::initialised] = Real(1);
+    }
+    Real stress_end[3];
+    abaqus_stress(setup, r.traction, stress_end);
+    const Real sed_end = Real(r.elastic_energy);
+    const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    if (!all_finite(end, mortar::kStateCount) || !all_finite(stress_end, counts.n_dir) ||
+        !std::isfinite(double(sed_end)) || !std::isfinite(double(spd_end)))
+      return reject_point(k, mortar::Failure::non_finite_result);
+    std::copy(end, end + mortar::kStateCount, st);
+    std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
+    write_energies(k, double(sed_end), double(spd_end));
+    return 0;
+  }
+};
+
+}  // namespace mj_adapter

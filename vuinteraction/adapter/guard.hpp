@@ -1,0 +1,73 @@
+// The skeleton every entry point runs: argument checks, props, then the law;
+// an error is reported, coded in SDV 21 and followed by the product's exit
+// utility. Nothing is thrown across the C ABI and every output is left finite
+// (docs/robustness.md).
+#pragma once
+
+#include <cstdio>
+
+#include "adapter/arguments.hpp"
+#include "adapter/report.hpp"
+#include "adapter/status_codes.hpp"
+
+namespace mj_adapter {
+
+// Abaqus's exit utility (XPLB_EXIT, XIT), resolved when Abaqus loads the
+// library; nullptr in the standalone build (MJ_STANDALONE), where there is
+// nothing to stop and the caller reads SDV 21 instead.
+using ExitUtility = void (*)();
+
+inline void stop_analysis(ExitUtility exit_utility) {
+  if (!exit_utility) return;
+  std::fflush(stderr);
+  exit_utility();
+}
+
+// What differs between the routines around the same skeleton.
+struct Routine {
+  const char* name;         // "VUINTERACTION", "VUINTER", "UINTER": messages
+  ArgumentNames arguments;  // how its argument list spells the checked sizes
+  Defaults defaults;        // what props(15) = 0 and props(20) = 0 mean
+  const char* unit;         // "block" or "point": what keeps its start values
+  ExitUtility exit_utility;
+};
+
+// One call of one routine, as the skeleton sees it. `Call` provides
+//   Counts counts;  const Real* props;
+//   void reject(int code)          finite outputs, `code` in SDV 21 as far as
+//                                  the declared arrays reach;
+//   bool integrate(const Caller&, const Setup&)
+//                                  the law over the call's points; false when
+//                                  the analysis must stop.
+template <class Call>
+void run_call(const Routine& routine, const char* surf_int, int surf_int_length, Call& call) noexcept {
+  const Caller who = make_caller(routine.name, surf_int, surf_int_length);
+  const ExitUtility exit_utility = routine.exit_utility;
+  try {
+    const ArgumentError a = check_counts(call.counts, routine.arguments);
+    if (a.code != 0) {
+      report_argument(who, a);
+      call.reject(a.code);
+      stop_analysis(exit_utility);
+      return;
+    }
+    Setup setup;
+    const mortar::ValidationError e = read_setup(call.props, call.counts.n_props, routine.defaults, setup);
+    if (!e.ok()) {
+      report_property(who, e);
+      call.reject(kBadProperty);
+      stop_analysis(exit_utility);
+      return;
+    }
+    if (!call.integrate(who, setup)) stop_analysis(exit_utility);
+  } catch (...) {
+    char what[160];
+    std::snprintf(what, sizeof what, "internal error: an exception escaped the law; the %s keeps its start values",
+                  routine.unit);
+    report(who, what);
+    call.reject(kInternalError);
+    stop_analysis(exit_utility);
+  }
+}
+
+}  // namespace mj_adapter

@@ -1,0 +1,190 @@
+// Abaqus/Standard's contact point (UINTER) over the law, always in double
+// precision. One call per contact point and per equilibrium iteration;
+// Abaqus passes the state at the start of the increment every time, and
+// keeps what the call returns only when the increment converges. This is
+// where Abaqus/Standard's conventions meet the law's (docs/abaqus.md, "Using
+// it in Abaqus/Standard"; law signs: docs/model.md 1):
+//
+//   normal   RDISP(1) > 0 is a penetration, < 0 a gap, at the END of the
+//            increment (current iteration); DRDISP its increment. The zero of
+//            the law's separation is the position at the start of the first
+//            increment in which the point is seen (SDV 22 = RDISP(1) -
+//            DRDISP(1) then, SDV 23 = 1): the same in every iteration of that
+//            increment, so repeating the call cannot move it. delta_n =
+//            SDV 22 - RDISP(1), opening positive.
+//   shear    RDISP(2..NDIR) are the accumulated slips from the beginning of
+//            the analysis; the law's slips are these totals, so the increment
+//            is RDISP(2..) - SDV 13..14 (a joint is bonded from the start of
+//            the analysis in shear).
+//   stress   STRESS(1) = -sigma_n (pressure positive); STRESS(2..NDIR) =
+//            shear_sign * tau with shear_sign = +1 unless props(20) = -1 (the
+//            convention of public working UINTER code, STRESS(2) = +K
+//            RDISP(2)).
+//   tangent  DDSDDR = d STRESS / d RDISP = C T D with T = d sigma / d delta
+//            the law's tangent (the consistent tangent of the implicit
+//            scheme, docs/model.md 7.5), C = diag(-1, s, s) and D =
+//            d delta / d RDISP = diag(-1, 1, 1). It is not symmetric
+//            (non-associated flow, softening): use UNSYMM=YES on *SURFACE
+//            INTERACTION.
+//   scheme   props(15) = 0 (or absent) selects the implicit scheme here (the
+//            only one with a consistent tangent); 1 or 2 run an explicit
+//            scheme with its continuum tangent.
+//   energies SED elastic energy at the end; SPD increment of plastic + damage
+//            + unilateral energy; SFD = SVD = SCD = 0; FLUX, DDFDDT, DDSDDT,
+//            DDFDDR = 0 (no heat, no temperature dependence).
+//   failure  the law rejects the increment (e.g. the local Newton fails at
+//            its smallest substep): PNEWDT = 0.5 (Abaqus retries with half
+//            the time increment), outputs finite (start traction, start
+//            secant stiffness, start state with the code in SDV 21), one line
+//            on stderr naming the interaction and node.
+//   LINPER   in a linear perturbation step the inputs are perturbations:
+//            DDSDDR is the tangent of the base state for a zero increment
+//            (its secant stiffness), STRESS = DDSDDR DRDISP, the state is not
+//            changed.
+//
+// Nothing here keeps mutable global or static state: every output is a
+// function of the arguments of this call alone.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "adapter/arguments.hpp"
+#include "adapter/report.hpp"
+#include "mortar/integrator.hpp"
+
+namespace mj_adapter {
+
+constexpr double kCutBack = 0.5;  // PNEWDT asked for when the law fails
+
+// Abaqus/Standard: props(15) = 0 is the implicit scheme, props(20) = 0 is +1.
+constexpr Defaults kStandardDefaults = {mortar::Scheme::implicit, 1.0, "props(20) is 0 (default, = +1), -1 or +1"};
+
+// The arguments UINTER reads or writes, in the adapter's own terms.
+struct StandardPoint {
+  Counts counts;
+  int node = 0;
+  bool perturbation = false;  // LINPER = 1
+  const double* rdisp = nullptr;
+  const double* drdisp = nullptr;
+  const double* props = nullptr;
+  double *stress = nullptr, *ddsddr = nullptr, *statev = nullptr;
+  double *flux = nullptr, *ddfddt = nullptr, *ddsddt = nullptr, *ddfddr = nullptr;
+  double *sed = nullptr, *sfd = nullptr, *spd = nullptr, *svd = nullptr, *scd = nullptr, *pnewdt = nullptr;
+
+  // A rejected call (bad argument or property): finite outputs as far as
+  // the declared arrays reach, and the code in SDV 21.
+  void reject(int code) const {
+    const int n_dir = counts.n_dir;
+    if (n_dir >= 1 && n_dir <= 3) {
+      for (int i = 0; i < n_dir; ++i) stress[i] = std::isfinite(stress[i]) ? stress[i] : 0.0;
+      std::fill(ddsddr, ddsddr + n_dir * n_dir, 0.0);
+      write_unused();
+    } else {
+      *sfd = *svd = *scd = 0;
+    }
+    *sed = std::isfinite(*sed) ? *sed : 0.0;
+    *spd = 0;
+    if (counts.n_states > mortar::slot::status) statev[mortar::slot::status] = code;
+  }
+
+  // The law over this point. A rejected increment asks Abaqus for a smaller
+  // one (PNEWDT) rather than stopping: always true.
+  bool integrate(const Caller& who, const Setup& setup) const {
+    write_unused();
+    if (rdisp[0] <= kUnpairedPenetration) {  // no opposite surface: no interaction
+      std::fill(stress, stress + counts.n_dir, 0.0);
+      std::fill(ddsddr, ddsddr + counts.n_dir * counts.n_dir, 0.0);
+      *sed = *spd = 0;
+      return true;
+    }
+    if (perturbation) {
+      integrate_perturbation(setup);
+    } else {
+      integrate_step(who, setup);
+    }
+    return true;
+  }
+
+ private:
+  // No heat and no temperature dependence; no friction, viscous or creep
+  // dissipation booked apart from the law's plasticity.
+  void write_unused() const {
+    flux[0] = flux[1] = 0;
+    std::fill(ddfddt, ddfddt + 4, 0.0);
+    std::fill(ddsddt, ddsddt + 2 * counts.n_dir, 0.0);
+    std::fill(ddfddr, ddfddr + 2 * counts.n_dir, 0.0);
+    *sfd = *svd = *scd = 0;
+  }
+
+  // Abaqus's STRESS and DDSDDR from the law's traction and tangent:
+  // STRESS = C sigma, DDSDDR = C T D (see the top of this file).
+  void write_stress(const Setup& setup, const mortar::Vec3& traction, const mortar::Mat3& tangent) const {
+    const mortar::Vec3 C(-1.0, setup.shear_sign, setup.shear_sign);
+    const mortar::Vec3 D(-1.0, 1.0, 1.0);
+    const int n_dir = counts.n_dir;
+    for (int i = 0; i < n_dir; ++i) {
+      stress[i] = C[i] * traction[i];
+      for (int j = 0; j < n_dir; ++j) ddsddr[i + j * n_dir] = C[i] * tangent(i, j) * D[j];
+    }
+  }
+
+  // Linear perturbation: the tangent of the base state (a zero increment
+  // from it, i.e. its secant stiffness), applied to the perturbation; the
+  // base state is not changed.
+  void integrate_perturbation(const Setup& setup) const {
+    mortar::State base;
+    mortar::load_state(statev, base);
+    mortar::Mat3 T;
+    const mortar::IncrementResult r = mortar::integrate_increment(setup.model, base, mortar::Vec3::Zero(), &T);
+    mortar::Vec3 d_rdisp = mortar::Vec3::Zero();
+    for (int i = 0; i < counts.n_dir; ++i) d_rdisp[i] = drdisp[i];
+    const mortar::Vec3 D(-1.0, 1.0, 1.0);
+    write_stress(setup, T * D.cwiseProduct(d_rdisp), T);
+    *sed = *spd = 0;
+    if (!r.status.ok()) *pnewdt = std::min(*pnewdt, kCutBack);
+  }
+
+  void integrate_step(const Caller& who, const Setup& setup) const {
+    namespace slot = mortar::slot;
+    double* st = statev;
+    mortar::State s;
+    mortar::load_state(st, s);
+    const bool first = st[slot::initialised] == 0.0;
+    // The reference is the start-of-increment position, the same in every
+    // iteration of the first increment (RDISP - DRDISP).
+    const double reference = first ? rdisp[0] - drdisp[0] : st[slot::reference_penetration];
+    mortar::Vec3 d((reference - rdisp[0]) - s.separation[0], rdisp[1] - s.separation[1],
+                   counts.n_dir > 2 ? rdisp[2] - s.separation[2] : 0.0);
+    if (!std::isfinite(reference)) d[0] = NAN;  // rejected by the law below
+    mortar::Mat3 T;
+    const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, d, &T);
+    mortar::store_state(s, st);
+    write_stress(setup, r.traction, T);
+    *sed = r.elastic_energy;
+    *spd = r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral;
+    if (!r.status.ok()) {
+      // The start state is kept (with the code in SDV 21); Abaqus abandons
+      // the increment and retries with PNEWDT times the time increment.
+      *pnewdt = std::min(*pnewdt, kCutBack);
+      report_rejected(who, r.status.failure);
+      return;
+    }
+    if (first) {
+      st[slot::reference_penetration] = reference;
+      st[slot::initialised] = 1;
+    }
+  }
+
+  void report_rejected(const Caller& who, mortar::Failure failure) const {
+    char what[400];
+    std::snprintf(what, sizeof what,
+                  "node %d: the law rejected the increment: %s (SDV 21 = %d); asking for a smaller increment "
+                  "(PNEWDT = %g)",
+                  node, mortar::failure_name(failure), int(failure), kCutBack);
+    report(who, what);
+  }
+};
+
+}  // namespace mj_adapter
