@@ -16,7 +16,11 @@ using namespace mortar::testing;
 
 namespace {
 
-Model implicit_model(const Parameters& p) { return model_with(p, Scheme::implicit); }
+Model implicit_model(const Parameters& p) {
+  Controls c;
+  c.scheme = Scheme::implicit;
+  return make_model_checked(p, c);
+}
 
 // Central differences of the local residual, column by column.
 Mat7 fd_jacobian(const Model& M, const LocalProblem& lp, const Vec7& x) {

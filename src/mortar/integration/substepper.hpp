@@ -1,0 +1,32 @@
+// The one substepper of the plastic part of a segment (docs/model.md 7.1-7.3,
+// 7.5), for every scheme: the substep budget, the return at fixed separation
+// where the rate statement has no strain-driven solution, the regime-crossing
+// bracket that ends a substep on the boundary delta_e_n = 0, settle() and the
+// step-size control, which the scheme (scheme.hpp) steers.
+#pragma once
+
+#include "mortar/integration/scheme.hpp"
+
+namespace mortar {
+
+struct Substepper {
+  const Model& M;
+  Point& P;
+  IntegrationStatus& st;
+  TangentTracker& tangent;
+  SubstepScheme& scheme;
+  bool at_boundary = false;  // the last run() stopped on the regime boundary
+
+  // Plastic substepping over the separation increment d, starting on the
+  // surface. Returns the fraction of d done: 1, or less when the regime
+  // switched inside (the point is then on the regime boundary) or on failure
+  // (st.failure set).
+  double run(const Vec3& d);
+};
+
+// Round-off scale of the regime boundary delta_e_n = 0 at a state.
+inline double boundary_eps(const Model& M, const State& y) {
+  return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.p.ft0 / M.p.kn});
+}
+
+}  // namespace mortar
