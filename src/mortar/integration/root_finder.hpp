@@ -1,7 +1,8 @@
 // The one-dimensional root finders of the integration: Pegasus (Dowell &
-// Jarratt 1972) for the elastic-plastic intersection and the end of a return
-// at fixed separation (docs/model.md 7.1), and the safeguarded regula falsi
-// on the substep size that ends a substep on the regime boundary (7.3).
+// Jarratt 1972) for the elastic-plastic intersection (docs/model.md 7.1) and
+// the end of a return at fixed separation (6, closure jump), and the
+// safeguarded regula falsi on the substep size that ends a substep on the
+// regime boundary (6, regime switches inside an increment).
 #pragma once
 
 #include <cmath>
@@ -38,7 +39,7 @@ double pegasus(Sample&& sample, double x0, double f0, double x1, double f1, int 
 
 // Bracket on the substep size around a regime boundary: e_lo, e_hi are the
 // elastic normal separations at the ends of substeps of size lo and hi
-// (docs/model.md 7.3). The next size is the regula falsi point, bisection
+// (docs/model.md 6). The next size is the regula falsi point, bisection
 // every third try or when the secant leaves the bracket.
 struct CrossingBracket {
   bool active = false;

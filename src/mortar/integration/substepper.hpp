@@ -1,5 +1,5 @@
-// The one substepper of the plastic part of a segment (docs/model.md 7.1-7.3,
-// 7.5), for every scheme: the substep budget, the return at fixed separation
+// The one substepper of the plastic part of a segment (docs/model.md 7.1,
+// 7.2, 7.5), for every scheme: the substep budget, the return at fixed separation
 // where the rate statement has no strain-driven solution, the regime-crossing
 // bracket that ends a substep on the boundary delta_e_n = 0, settle() and the
 // step-size control, which the scheme (scheme.hpp) steers.
