@@ -22,13 +22,9 @@ struct BackwardEulerStep {
   bool grow_n = true, grow_s = true;
 };
 
-// Loading or unloading: from inside the surface, the elastic trial with the
-// secant stiffness (Eq. 1), elastic if it stays inside; from on the surface,
-// the rate statement decides (the trial on the damage-growing branch). In the
-// open regime the secant kbar (1 - d) can be so small late in the softening
-// (1 - dn ~ 1e-5) that the secant trial rises by less than FTOL while the
-// rate statement is loading; classifying that as elastic would stall the
-// softening. Not ok when the local solve failed (the caller halves).
+// One step from P over dd: elastic (the secant trial stays inside, or the
+// rate statement unloads), plastic (the local problem solved on the branches
+// of stage()), or not ok when the local solve failed (the caller halves).
 BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st);
 
 // The closed-regime step that ends on the regime boundary delta_e_n = 0
