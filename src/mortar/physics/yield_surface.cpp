@@ -2,19 +2,9 @@
 
 namespace mortar {
 
-namespace {
-
-// The intermediate quantities of one evaluation, shared by the values and
-// the derivatives so that both read the very same arithmetic.
-struct Evaluation {
-  double tau = 0, R = 0, ratio = 0, shear_dir = 0;  // |tau|, sqrt(alpha^2 + tau^2), dR/dalpha, tau/R
-  double ft = 0, w = 0, m_n = 0;                   // tension cut-off, blend weight, normal flow
-  double din_s = 0, tension = 0, pressure = 0;
-};
-
 // Derivatives of the surface size (Eqs. 3-6), the flow direction (Eq. 10)
 // and the work rates (Eqs. 7-9) with respect to traction and works.
-void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const Flow& f, const Evaluation& v,
+void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const Flow& f, const FlowEvaluation& v,
                       LocalDerivatives& d) {
   const Parameters& p = M.p;
   d.m = f.m;
@@ -84,52 +74,6 @@ void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const
   if (sn < 0) g3_s[0] -= wear * din_s;
   d.g_sigma.row(2) = g3_s.transpose();
   d.g_kappa.row(2) = (pressure * din_s * t_k + pressure * wear * (1 + p.bs) * q_k).transpose();
-}
-
-}  // namespace
-
-Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow, LocalDerivatives* derivatives) {
-  const Parameters& p = M.p;
-  Flow f;
-  Evaluation v;
-  v.tau = shear_norm(sigma);
-  v.R = std::hypot(S.alpha, v.tau);
-  const double tau = v.tau, R = v.R;
-  const double e1 = R > 0 ? sigma[1] / R : 0.0, e2 = R > 0 ? sigma[2] / R : 0.0;
-  v.shear_dir = R > 0 ? tau / R : 0.0;  // |dG/dtau|
-
-  // Normal flow: tan(psi) under compression, blended linearly to the
-  // associated tan(phi) at the tension cut-off sigma_n = ft (docs/model.md
-  // 5, degenerate flow). Continuous across sigma_n = 0, so a joint crossing
-  // from closed to open keeps its flow direction.
-  v.ft = p.ft0 * S.s;
-  if (sigma[0] > 0) v.w = v.ft > 0 ? std::min(1.0, sigma[0] / v.ft) : 1.0;
-  v.m_n = S.tan_psi + (S.tan_phi - S.tan_psi) * v.w;
-
-  f.dF = Vec3(S.tan_phi, e1, e2);
-  f.m = Vec3(v.m_n, e1, e2);
-  f.k_A_m = k_flow.cwiseProduct(f.m);
-
-  // Works per unit lambda (Eqs. 7-9); the inelastic increment includes the
-  // crack part in every regime (Eq. 17).
-  const double din_n = (1 + p.bn) * v.m_n;
-  v.din_s = (1 + p.bs) * v.shear_dir;
-  v.tension = std::max(sigma[0], 0.0);
-  v.pressure = std::max(-sigma[0], 0.0);
-  f.gI = v.tension * din_n;
-  f.gII = (tau - v.pressure * S.tan_phi) * v.din_s;
-  f.gIII = v.pressure * std::abs(S.tan_phi - M.tan_phir) * v.din_s;
-
-  // Hardening term of the consistency condition (Eq. 19, first part).
-  const double ds_dl = S.s_raw > 0 ? -(f.gI / p.GIC + f.gII / p.GIIC) : 0.0;
-  const double dt_dl = -p.m * (S.tan_phi - M.tan_phir) * f.gIII;
-  v.ratio = R > 0 ? S.alpha / R : 1.0;  // d R / d alpha
-  const double dF_ds = v.ratio * S.a - S.b;
-  const double dF_dt = v.ratio * S.s * S.da + sigma[0] - S.s * S.db;
-  f.hardening = dF_ds * ds_dl + dF_dt * dt_dl;
-  f.denominator = f.dF.dot(f.k_A_m) - f.hardening;
-  if (derivatives) fill_derivatives(M, sigma, S, f, v, *derivatives);
-  return f;
 }
 
 LocalDerivatives local_derivatives(const Model& M, const Vec3& sigma, const Vec3& kappa) {
