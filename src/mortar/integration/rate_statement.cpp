@@ -24,11 +24,6 @@ Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
   return r;
 }
 
-bool snaps_back(const Flow& f) {
-  const double scale = f.dF.dot(f.k_A_m);
-  return scale > 0 && f.denominator <= 1e-12 * scale;
-}
-
 namespace {
 
 // Rates of one stage on given branches of the open regime (rate_stiffness).

@@ -24,7 +24,10 @@ Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl);
 // No strain-driven solution: the consistency denominator is not positive
 // although the flow changes the traction (softening outruns the elastic
 // relaxation: a snap-back of the material point, docs/model.md 6).
-bool snaps_back(const Flow& f);
+inline bool snaps_back(const Flow& f) {
+  const double scale = f.dF.dot(f.k_A_m);
+  return scale > 0 && f.denominator <= 1e-12 * scale;
+}
 
 // One stage of the rate statement over dd from P. In the open regime each
 // component is on the damage-growing branch unless the damage it implies

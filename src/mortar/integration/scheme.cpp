@@ -49,7 +49,6 @@ Attempt ForwardEuler::attempt(const Point& P, const Vec3& dd, double, const Rate
 Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
   const Controls& c = M_.controls;
   const Point A = first_stage_end(P, dd, r1);
-  end_ = A;
   error_ = 0;
   const Rates r2 = stage(M_, A, dd);
   // The second stage entered the snap-back region: halve; at the smallest
@@ -57,6 +56,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
   if (r2.snapback && dT > c.min_substep) return retry_with(halved(c, dT));
   if (r2.snapback) {
     st_.min_substep_hit = true;
+    end_ = A;
   } else {
     end_ = P;
     add(end_, r1, 0.5);

@@ -8,21 +8,6 @@
 
 namespace mortar {
 
-bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
-  const double e = y.elastic_separation()[0];
-  if (!(e > 0)) return true;
-  return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
-}
-
-bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
-  const Vec3 e = y.elastic_separation();
-  const double es = std::hypot(e[1], e[2]);
-  if (!(es > 0)) return true;
-  const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
-  const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
-  return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
-}
-
 void disintegrate_if_no_strength(const Model& M, State& y) {
   if (!y.open || surface_of(M, y).s > 0 || (y.dn >= 1 && y.ds >= 1)) return;
   const Vec3 e = y.elastic_separation();

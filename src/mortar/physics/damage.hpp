@@ -4,6 +4,8 @@
 // integration schemes.
 #pragma once
 
+#include <cmath>
+
 #include "mortar/parameters.hpp"
 #include "mortar/state.hpp"
 
@@ -12,8 +14,20 @@ namespace mortar {
 // Whether the open-regime growing branch keeps the secant damage from
 // decreasing for a plastic increment dp: d (dd - dp) <= b dp along the
 // elastic separation (docs/model.md 6).
-bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp);
-bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp);
+inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const double e = y.elastic_separation()[0];
+  if (!(e > 0)) return true;
+  return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
+}
+
+inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const Vec3 e = y.elastic_separation();
+  const double es = std::hypot(e[1], e[2]);
+  if (!(es > 0)) return true;
+  const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
+  const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
+  return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
+}
 
 // An open joint with no strength left (s = 0) can only carry zero traction:
 // its surface is the apex of the cone, so the damage is complete (d = 1).
