@@ -100,7 +100,7 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   st_.plastic = true;
   ended_plastic_ = true;
   const double done = substepper_.run((1 - a_y) * rest);
-  at_boundary_ = substepper_.at_boundary;
+  at_boundary_ = substepper_.at_boundary();
   return a_y + (1 - a_y) * done;
 }
 
