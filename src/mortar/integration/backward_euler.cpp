@@ -5,69 +5,92 @@
 
 namespace mortar {
 
+namespace {
+
+enum class Outcome { plastic, unloading, failed };
+
+// The step on given branches of the open regime (rate_stiffness): unloading
+// when the trial on them stays inside the surface, else the local problem
+// solved from the forward-Euler predictor (the explicit rate statement over
+// dd, where the consistency denominator at P is positive).
+Outcome solve_on_branches(const Model& M, const Point& P, const Surface& S, const Vec3& dd, bool grow_n,
+                          bool grow_s, BackwardEulerStep& b, IntegrationStatus& st) {
+  const Vec3 kappa(P.y.wI, P.y.wII, P.y.wIII);
+  b.k = rate_stiffness(M, P.y, grow_n, grow_s);
+  b.grow_n = grow_n;
+  b.grow_s = grow_s;
+  const Vec3 trial = P.sigma + b.k.on_separation.cwiseProduct(dd);
+  if (yield_function(trial, S) <= yield_tolerance(M, trial)) return Outcome::unloading;
+  b.problem = make_local_problem(M, P.sigma, trial, b.k.on_flow, kappa);
+  const Flow fP = flow_of(M, P.sigma, S, b.k.on_flow);
+  Vec7 predictor;
+  const Vec7* start = nullptr;
+  if (fP.denominator > 0) {
+    const double dl0 = std::max(0.0, yield_function(trial, S)) / fP.denominator;
+    predictor = LocalUnknowns{trial - dl0 * fP.k_A_m, dl0, kappa + dl0 * Vec3(fP.gI, fP.gII, fP.gIII)}.vector();
+    if (predictor.allFinite()) start = &predictor;
+  }
+  b.solution = solve_local(M, b.problem, M.controls.ftol, start);
+  st.newton_iterations += b.solution.iterations;
+  if (!b.solution.converged) return Outcome::failed;
+  const LocalUnknowns u = b.solution.unknowns();
+  b.end = local_derivatives(M, u.sigma, u.kappa);
+  return Outcome::plastic;
+}
+
+// N (P with its separation moved) at the end of a plastic step: traction
+// sigma, plastic increment dp, works kappa.
+void end_plastic_step(const Model& M, const Point& P, Point& N, const Vec3& sigma, const Vec3& dp,
+                      const Vec3& kappa) {
+  N.sigma = sigma;
+  N.y.plastic += dp;
+  N.y.crack += crack_ratio(M).cwiseProduct(dp);
+  // gI, gIII >= 0 (Eqs. 7, 9), so the exact solution never lowers wI or
+  // wIII; the max only removes Newton's round-off (a work of -1e-22 where
+  // the rate is zero), which check_state() would reject.
+  N.y.wI = std::max(kappa[0], P.y.wI);
+  N.y.wII = kappa[1];
+  N.y.wIII = std::max(kappa[2], P.y.wIII);
+  // Trapezoidal in the traction: in the closed regime (constant K) this makes
+  // trapezoidal external work = elastic energy change + dissipation exactly.
+  N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
+}
+
+}  // namespace
+
 BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st) {
   BackwardEulerStep out;
   out.N = P;
   out.N.y.separation += dd;
   // Loading or unloading. From inside the surface: the elastic trial with
   // the secant stiffness (Eq. 1), elastic if it stays inside. From on the
-  // surface: the rate statement decides (below: the trial on the
-  // damage-growing branch), as stage() does with the sign of dF . kS dd. In
-  // the open regime the secant kbar (1 - d) can be so small late in the
-  // softening (1 - dn ~ 1e-5) that the secant trial rises by less than FTOL
-  // while the rate statement is loading; classifying that as elastic would
-  // stall the softening.
+  // surface: the rate statement decides (the trial on the damage-growing
+  // branch), as stage() does with the sign of dF . kS dd. In the open regime
+  // the secant kbar (1 - d) can be so small late in the softening
+  // (1 - dn ~ 1e-5) that the secant trial rises by less than FTOL while the
+  // rate statement is loading; classifying that as elastic would stall the
+  // softening.
   const Surface S = surface_of(M, P.y);
   const bool on_surface = yield_function(P.sigma, S) >= -yield_tolerance(M, P.sigma);
   const Vec3 sigma_e = P.sigma + secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
-  const RateStiffness k_grow = rate_stiffness(M, P.y);
-  const Flow f0 = flow_of(M, P.sigma, S, k_grow.on_flow);
-  // As in the explicit stage(): a flow that no stiffness can feed (open and
-  // fully damaged along it) leaves only the secant relation.
-  if ((!on_surface && yield_function(sigma_e, S) <= yield_tolerance(M, sigma_e)) || !(f0.dF.dot(f0.k_A_m) > 0)) {
-    out.N.sigma = traction_of(M, out.N.y);
-    out.ok = true;
-    return out;
-  }
-  out.plastic = true;
-  const Vec3 kappa(P.y.wI, P.y.wII, P.y.wIII);
-  // The branch logic is that of the explicit stage(): on the damage-growing
-  // branch first; a trial inside the surface there is unloading, and the
-  // step is elastic on the secant (damage frozen); where the growing
-  // solution would make the secant damage decrease, the frozen branch for
-  // that component, unless it has no plastic solution.
-  enum class Outcome { plastic, unloading, failed };
-  auto solve = [&](bool grow_n, bool grow_s, BackwardEulerStep& b) {
-    b.k = rate_stiffness(M, P.y, grow_n, grow_s);
-    b.grow_n = grow_n;
-    b.grow_s = grow_s;
-    const Vec3 trial = P.sigma + b.k.on_separation.cwiseProduct(dd);
-    if (yield_function(trial, S) <= yield_tolerance(M, trial)) return Outcome::unloading;
-    b.problem = make_local_problem(M, P.sigma, trial, b.k.on_flow, kappa);
-    // Forward-Euler predictor from P (the explicit rate statement over dd),
-    // where the consistency denominator there is positive.
-    const Flow fP = flow_of(M, P.sigma, S, b.k.on_flow);
-    Vec7 predictor;
-    const Vec7* start = nullptr;
-    if (fP.denominator > 0) {
-      const double dl0 = std::max(0.0, yield_function(trial, S)) / fP.denominator;
-      predictor << trial - dl0 * fP.k_A_m, dl0, kappa + dl0 * Vec3(fP.gI, fP.gII, fP.gIII);
-      if (predictor.allFinite()) start = &predictor;
-    }
-    b.solution = solve_local(M, b.problem, M.controls.ftol, start);
-    st.newton_iterations += b.solution.iterations;
-    if (!b.solution.converged) return Outcome::failed;
-    const LocalUnknowns u = b.solution.unknowns();
-    b.end = local_derivatives(M, u.sigma, u.kappa);
-    return Outcome::plastic;
-  };
+  const Flow f0 = flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow);
   auto elastic = [&]() {
     out.plastic = false;
     out.N.sigma = traction_of(M, out.N.y);
     out.ok = true;
     return out;
   };
-  const Outcome grow = solve(true, true, out);
+  // As in the explicit stage(): a flow that no stiffness can feed (open and
+  // fully damaged along it) leaves only the secant relation.
+  if ((!on_surface && yield_function(sigma_e, S) <= yield_tolerance(M, sigma_e)) || !(f0.dF.dot(f0.k_A_m) > 0))
+    return elastic();
+  out.plastic = true;
+  // The branch logic is that of the explicit stage(): on the damage-growing
+  // branch first; a trial inside the surface there is unloading, and the
+  // step is elastic on the secant (damage frozen); where the growing
+  // solution would make the secant damage decrease, the frozen branch for
+  // that component, unless it has no plastic solution.
+  const Outcome grow = solve_on_branches(M, P, S, dd, true, true, out, st);
   if (grow == Outcome::unloading) return elastic();
   if (grow == Outcome::failed) return out;  // the caller halves the step
   if (P.y.open) {
@@ -78,7 +101,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
     const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
     if (!(keep_n && keep_s)) {
       BackwardEulerStep frozen = out;
-      const Outcome f = solve(keep_n, keep_s, frozen);
+      const Outcome f = solve_on_branches(M, P, S, dd, keep_n, keep_s, frozen, st);
       if (f == Outcome::unloading) return elastic();
       // No plastic solution on the frozen branch: the growing branch stands
       // and settle() keeps the damage from decreasing.
@@ -86,22 +109,8 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
     }
   }
   const LocalUnknowns x = out.solution.unknowns();
-  const double dl = x.dl;
-  const Vec3 dp = dl * out.end.m;
-  Point& N = out.N;
-  N.sigma = x.sigma;
-  N.y.plastic += dp;
-  N.y.crack += crack_ratio(M).cwiseProduct(dp);
-  // gI, gIII >= 0 (Eqs. 7, 9), so the exact solution never lowers wI or
-  // wIII; the max only removes Newton's round-off (a work of -1e-22 where
-  // the rate is zero), which check_state() would reject.
-  N.y.wI = std::max(x.kappa[0], P.y.wI);
-  N.y.wII = x.kappa[1];
-  N.y.wIII = std::max(x.kappa[2], P.y.wIII);
-  // Trapezoidal in the traction: in the closed regime (constant K) this makes
-  // trapezoidal external work = elastic energy change + dissipation exactly.
-  N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
-  out.ok = N.sigma.allFinite() && out.solution.x.allFinite();
+  end_plastic_step(M, P, out.N, x.sigma, x.dl * out.end.m, x.kappa);
+  out.ok = out.N.sigma.allFinite() && out.solution.x.allFinite();
   return out;
 }
 
@@ -153,19 +162,11 @@ BoundaryStep backward_euler_to_boundary(const Model& M, const Point& P, const Ve
     kappa = u.kappa;
     m = local_derivatives(M, sigma, kappa).m;
   }
-  const Vec3 dp = dl * m;
-  Point& N = out.N;
-  N = P;
-  N.sigma = sigma;
-  N.y.separation += theta * dd;
-  N.y.plastic += dp;
-  N.y.crack += crack_ratio(M).cwiseProduct(dp);
-  N.y.wI = std::max(kappa[0], P.y.wI);
-  N.y.wII = kappa[1];
-  N.y.wIII = std::max(kappa[2], P.y.wIII);
-  N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
+  out.N = P;
+  out.N.y.separation += theta * dd;
+  end_plastic_step(M, P, out.N, sigma, dl * m, kappa);
   out.theta = theta;
-  out.ok = N.sigma.allFinite() && N.y.plastic.allFinite();
+  out.ok = out.N.sigma.allFinite() && out.N.y.plastic.allFinite();
   return out;
 }
 
