@@ -33,7 +33,8 @@ struct SchemeTraits {
 // What one attempted substep came to.
 struct Attempt {
   enum Kind { step, retry, fail, on_boundary } kind = step;
-  const Point* end = nullptr;  // step, on_boundary: the end point before settle()
+  const Point* end = nullptr;  // step, on_boundary: the end point before settle() (held by the
+                               // scheme until its next attempt)
   double size = 0;             // retry: the substep size to try next
   Failure failure = Failure::none;
   double theta = 0;            // on_boundary: the fraction of the substep done

@@ -1,9 +1,13 @@
-// The one substepper of the plastic part of a segment (docs/model.md 7.1,
-// 7.2, 7.5), for every scheme: the substep budget, the return at fixed separation
-// where the rate statement has no strain-driven solution, the regime-crossing
-// bracket that ends a substep on the boundary delta_e_n = 0, settle() and the
-// step-size control, which the scheme (scheme.hpp) steers.
+// The one substepper of the plastic part of a segment, for every scheme
+// (docs/model.md 7.1, 7.2, 7.5): the substep budget, the return at fixed
+// separation where the rate statement has no strain-driven solution, the
+// regime-crossing bracket that ends a substep on the boundary delta_e_n = 0
+// (6), settle() and the step-size control, which the scheme (scheme.hpp)
+// steers.
 #pragma once
+
+#include <algorithm>
+#include <cmath>
 
 #include "mortar/integration/root_finder.hpp"
 #include "mortar/integration/scheme.hpp"
