@@ -71,7 +71,8 @@ struct ValidationError {
   std::string message() const;  // "parameter 'c0' (props(4)) = 0.1 violates ..."
 };
 
-// Validates per docs/model.md 2 (parameters) and 7.4 (controls). Non-throwing; cheap enough for every call.
+// Validates per docs/model.md 2 (parameters) and 7.4 (controls).
+// Non-throwing; cheap enough for every call.
 ValidationError validate(const Parameters& p);
 ValidationError validate(const Controls& c);
 
