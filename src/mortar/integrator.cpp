@@ -88,7 +88,8 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   // = 0 up to round-off, which can leave w_II a few ulps below zero; w_II no
   // longer affects the strength there, and check_state() requires w_II >= 0.
   if (P.y.wII < 0) P.y.wII = 0;
-  if (check_state(P.y) != nullptr || !P.sigma.allFinite()) return failed(M, state, res, Failure::non_finite_result, tangent);
+  if (check_state(P.y) != nullptr || !P.sigma.allFinite())
+    return failed(M, state, res, Failure::non_finite_result, tangent);
   // Finite separations can still give an elastic energy or a dissipation
   // increment beyond double's range (increments near 1e155 mm).
   const double energy_end = elastic_energy(M, P.y);
