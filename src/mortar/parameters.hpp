@@ -42,7 +42,7 @@ double parameter_at(const Parameters& p, int index);
 // Index of a parameter by its name ("kn", "GIC", ...), or -1.
 int parameter_index(const std::string& name);
 
-// Stress-integration scheme (MODEL.md section 7).
+// Stress-integration scheme (docs/model.md 7).
 enum class Scheme : int {
   modified_euler = 1,  // Sloan, Abbo & Sheng (2001): Heun pair, error control (default)
   forward_euler = 2,   // one explicit step, no error control (baseline)
@@ -71,7 +71,8 @@ struct ValidationError {
   std::string message() const;  // "parameter 'c0' (props(4)) = 0.1 violates ..."
 };
 
-// Validates per MODEL.md section 2. Non-throwing; cheap enough for every call.
+// Validates per docs/model.md 2 (parameters) and 7.4 (controls).
+// Non-throwing; cheap enough for every call.
 ValidationError validate(const Parameters& p);
 ValidationError validate(const Controls& c);
 

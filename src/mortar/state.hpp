@@ -1,5 +1,5 @@
 // State of one interface point, and its named layout over the solver-owned
-// flat array (MODEL.md section 3; positions 1-14 are a user-facing contract).
+// flat array (docs/model.md 3; positions 1-14 are a user-facing contract).
 #pragma once
 
 #include <Eigen/Core>
@@ -9,7 +9,7 @@ namespace mortar {
 using Vec3 = Eigen::Vector3d;  // (n, s1, s2) components
 
 // Positions in the flat state array, 0-based (docs and Abaqus SDV numbers are
-// these + 1). 1-14 as MODEL.md section 3; 15 onwards implementation-defined.
+// these + 1). 1-14 as docs/model.md 3; 15 onwards implementation-defined.
 namespace slot {
 enum : int {
   plastic_n = 0, plastic_s1, plastic_s2,  // 1-3   delta_p            [mm]

@@ -16,7 +16,11 @@ using namespace mortar::testing;
 
 namespace {
 
-Model implicit_model(const Parameters& p) { return model_with(p, Scheme::implicit); }
+Model implicit_model(const Parameters& p) {
+  Controls c;
+  c.scheme = Scheme::implicit;
+  return make_model_checked(p, c);
+}
 
 // Central differences of the local residual, column by column.
 Mat7 fd_jacobian(const Model& M, const LocalProblem& lp, const Vec7& x) {
@@ -96,3 +100,21 @@ TEST_CASE("Implicit: the analytic Jacobian of the local problem matches central 
   CHECK(err < 1e-7);
 }
 
+
+TEST_CASE("Implicit: the named unknowns map to and from Newton's vector", "[implicit]") {
+  const Vec7 x = (Vec7() << 1, 2, 3, 4, 5, 6, 7).finished();
+  const LocalUnknowns u = LocalUnknowns::of(x);
+  CHECK(u.sigma == Vec3(1, 2, 3));
+  CHECK(u.dl == 4);
+  CHECK(u.kappa == Vec3(5, 6, 7));
+  CHECK(u.vector() == x);
+  CHECK(x[unknown::theta] == 1);  // the boundary step's theta shares sigma_n's place
+  // The residual's consistency row sits at the multiplier's place: F at the trial point.
+  const Model M = implicit_model(almeida_m15());
+  const Vec3 trial(0.5, 4.0, 0.0);
+  const LocalProblem lp = make_local_problem(M, Vec3::Zero(), trial, Vec3(M.p.kn, M.p.ks, M.p.ks), Vec3::Zero());
+  const Vec7 r = local_residual(M, lp, trial_point(lp));
+  CHECK(r[unknown::multiplier] == Approx(yield_function(trial, surface_of(M, 0, 0, 0)) * lp.row_scale[3]));
+  CHECK(r.segment<3>(unknown::sigma_n).norm() == 0);
+  CHECK(r.segment<3>(unknown::work_I).norm() == 0);
+}

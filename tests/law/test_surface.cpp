@@ -96,3 +96,47 @@ TEST_CASE("Surface: flow direction blends from tan(psi) to tan(phi) across the o
   CHECK(a.m.allFinite());
   CHECK(a.m[1] == 0);
 }
+
+TEST_CASE("Surface: asking for the derivatives leaves the values of the flow unchanged", "[surface]") {
+  // flow_of is one evaluation for values and derivatives: the values must be
+  // the same bits with and without the derivatives.
+  const Model M = make_model_checked(almeida_m15());
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-3, 2), w(0, 1);
+  for (int k = 0; k < 500; ++k) {
+    const Surface S = surface_of(M, 1.2 * M.p.GIC * w(rng), 0.5 * M.p.GIIC * w(rng), 1e-3 * w(rng));
+    const Vec3 sigma(u(rng), k % 7 == 0 ? 0.0 : u(rng), u(rng));
+    LocalDerivatives d;
+    const Flow a = flow_of(M, sigma, S, kbar_of(M));
+    const Flow b = flow_of(M, sigma, S, kbar_of(M), &d);
+    CHECK(a.dF == b.dF);
+    CHECK(a.m == b.m);
+    CHECK(a.k_A_m == b.k_A_m);
+    CHECK(a.gI == b.gI);
+    CHECK(a.gII == b.gII);
+    CHECK(a.gIII == b.gIII);
+    CHECK(a.denominator == b.denominator);
+    CHECK(d.m == a.m);
+    CHECK(d.g == Vec3(a.gI, a.gII, a.gIII));
+  }
+}
+
+TEST_CASE("Surface: the work rates' derivatives match central differences", "[surface]") {
+  const Model M = make_model_checked(van_der_pluijm(-0.5));
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> u(-1.5, 0.5), w(0, 1);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3 kappa(0.3 * M.p.GIC * w(rng), 0.3 * M.p.GIIC * w(rng), 1e-4 * w(rng));
+    const Vec3 sigma(u(rng), u(rng), u(rng));
+    if (std::abs(sigma[0]) < 1e-3) continue;  // the kink of <sigma_n>
+    const LocalDerivatives d = local_derivatives(M, sigma, kappa);
+    for (int j = 0; j < 3; ++j) {
+      const double h = 1e-7;
+      Vec3 a = sigma, b = sigma;
+      a[j] += h;
+      b[j] -= h;
+      const Vec3 fd = (local_derivatives(M, a, kappa).g - local_derivatives(M, b, kappa).g) / (2 * h);
+      for (int i = 0; i < 3; ++i) CHECK(d.g_sigma(i, j) == Approx(fd[i]).margin(1e-6));
+    }
+  }
+}

@@ -1,0 +1,147 @@
+#include "mortar/integration/increment.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mortar/integration/relaxation.hpp"
+#include "mortar/integration/root_finder.hpp"
+
+namespace mortar {
+
+namespace {
+constexpr int kMaxSegments = 32;  // docs/model.md 9, code 3
+}  // namespace
+
+Failure IncrementIntegration::run(const Vec3& d) {
+  double left = 1;  // fraction of d still to integrate
+  for (int seg = 0; left > 1e-15; ++seg) {
+    if (seg >= kMaxSegments) return Failure::too_many_switches;
+    const double e_n = P_.y.elastic_separation()[0];
+    const double eps = boundary_eps(M_, P_.y);
+    // Regime flag inconsistent with the sign of delta_e_n (beyond round-off):
+    // switch before integrating.
+    if ((P_.y.open && e_n < -eps) || (!P_.y.open && e_n > eps)) {
+      if (!switch_regime()) return Failure::relaxation_failed;
+      continue;
+    }
+    const Vec3 rest = left * d;
+    // Where an elastic path would cross delta_e_n = 0.
+    double frac = 1;
+    bool boundary = false;
+    if (crosses(P_.y.open, e_n + rest[0]) && std::abs(e_n + rest[0]) > eps) {
+      frac = std::clamp(-e_n / rest[0], 0.0, 1.0);
+      boundary = true;
+    }
+    const double done = segment(rest, frac, boundary);
+    if (!st_.ok()) return st_.failure;
+    left *= 1 - done;
+    if (at_boundary_ && !switch_regime()) return Failure::relaxation_failed;
+  }
+  return Failure::none;
+}
+
+// One segment of constant regime over the separation increment `rest`. An
+// elastic path would reach the regime boundary at the fraction `frac` (1 when
+// it does not); the plastic part is integrated over all of `rest` and finds
+// its own boundary crossing. Returns the fraction of `rest` done; sets
+// at_boundary_ when it stopped on the boundary.
+double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundary) {
+  at_boundary_ = false;
+  const Vec3 K = secant_stiffness(M_, P_.y.dn, P_.y.ds, P_.y.open);
+  const Vec3 e0 = P_.y.elastic_separation();
+  const Surface S = surface_of(M_, P_.y);
+  auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
+  auto tol_at = [&](double a) { return yield_tolerance(M_, K.cwiseProduct(e0 + a * rest)); };
+  auto sample = [&](double a) { return RootSample{F_at(a), tol_at(a)}; };
+  const double F0 = yield_function(P_.sigma, S), tol0 = tol_at(0);
+  const Vec3 n = flow_of(M_, P_.sigma, S, rate_stiffness(M_, P_.y).on_flow).dF;
+  const Vec3 dsig = K.cwiseProduct(rest);
+  const bool on_surface = std::abs(F0) <= tol0;
+  const bool loading = n.dot(dsig) > 0;
+  const bool at_edge = frac * std::abs(rest[0]) <= boundary_eps(M_, P_.y);
+  const bool rate_loading = scheme_.traits.plastic_when_rate_loading && on_surface &&
+                            n.dot(rate_stiffness(M_, P_.y).on_separation.cwiseProduct(rest)) > 0;
+  if (F_at(frac) <= tol_at(frac) && !(on_surface && loading && at_edge) && !rate_loading) {
+    P_.y.separation += frac * rest;
+    P_.sigma = traction_of(M_, P_.y);
+    if (tangent_) {
+      tangent_.D->separation += frac * (Mat3::Identity() - tangent_.D->separation);
+      secant_sensitivity(M_, P_.y, *tangent_.D);
+    }
+    ended_plastic_ = false;
+    at_boundary_ = boundary;
+    return frac;
+  }
+  double a_y = 0;
+  if (F0 > tol0 && scheme_.traits.relaxes_start_outside) {
+    if (!relax(M_, P_, st_, false)) {
+      st_.failure = Failure::relaxation_failed;
+      return 0;
+    }
+  } else if (F0 < -tol0) {
+    a_y = pegasus(sample, 0, F0, frac, F_at(frac), 100);
+  } else if (on_surface && n.dot(dsig) < -1e-9 * n.norm() * dsig.norm()) {
+    // On the surface but unloading first: reloading inside the same
+    // increment? Scan for the first fraction with F < 0 (Sloan et al.).
+    for (int i = 1; i <= 10; ++i) {
+      const double a = 0.1 * i * frac;
+      if (F_at(a) < -tol_at(a)) {
+        a_y = pegasus(sample, a, F_at(a), frac, F_at(frac), 100);
+        break;
+      }
+    }
+  }
+  if (a_y > 0 && scheme_.traits.refines_intersection) a_y = refine_intersection(a_y, frac, rest, K, e0, S);
+  if (a_y > 0) {
+    P_.y.separation += a_y * rest;
+    P_.sigma = traction_of(M_, P_.y);
+    if (tangent_) intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
+  }
+  st_.plastic = true;
+  ended_plastic_ = true;
+  const double done = substepper_.run((1 - a_y) * rest);
+  at_boundary_ = substepper_.at_boundary();
+  return a_y + (1 - a_y) * done;
+}
+
+// Newton on the intersection fraction, from Pegasus's answer (within FTOL)
+// to round-off, so that the update is a smooth function of the increment and
+// its tangent can be checked by finite differences (docs/model.md 7.5).
+double IncrementIntegration::refine_intersection(double a, double frac, const Vec3& rest, const Vec3& K,
+                                                 const Vec3& e0, const Surface& S) const {
+  auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
+  double f = F_at(a);
+  for (int it = 0; it < 4 && f != 0; ++it) {
+    const Vec3 sigma = K.cwiseProduct(e0 + a * rest);
+    const double slope = flow_of(M_, sigma, S, K).dF.dot(K.cwiseProduct(rest));
+    if (!(slope > 0)) break;
+    const double an = std::clamp(a - f / slope, 0.0, frac);
+    const double fn = F_at(an);
+    if (!(std::abs(fn) < std::abs(f))) break;
+    a = an;
+    f = fn;
+  }
+  return a;
+}
+
+// Switch of the unilateral regime at the current separation (Eq. 13): the
+// stiffness jumps, the traction is re-derived from Eq. 1, the elastic energy
+// that the jump removes (opening) or adds (closing) is booked, and a closing
+// that lands outside the surface returns to it at fixed separation.
+bool IncrementIntegration::switch_regime() {
+  tangent_.forget(st_);
+  const double before = elastic_energy(M_, P_.y);
+  P_.y.open = !P_.y.open;
+  P_.y.energy_unilateral += before - elastic_energy(M_, P_.y);
+  ++st_.regime_switches;
+  disintegrate_if_no_strength(M_, P_.y);
+  P_.sigma = traction_of(M_, P_.y);
+  if (outside_surface(M_, P_)) {
+    // The return depends on where the switch happened: treated as fixed.
+    tangent_.lost = true;
+    return relax(M_, P_, st_, false);
+  }
+  return true;
+}
+
+}  // namespace mortar

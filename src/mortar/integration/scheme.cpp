@@ -1,0 +1,179 @@
+#include "mortar/integration/scheme.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mortar/integration/drift_correction.hpp"
+
+namespace mortar {
+
+namespace {
+
+constexpr double kTiny = 1e-300;
+// Implicit scheme: Newton iterations (all local solves) allowed per increment.
+// A smooth increment takes 3-10; 2e5 bounds the worst case to about 0.3 s
+// (tests/law/test_implicit.cpp, invariant 10: 35 of 48 000 extreme
+// increments fail on it or at the smallest substep).
+constexpr int kMaxNewtonIterations = 200000;
+
+Attempt step_to(const Point& N) { return Attempt{Attempt::step, &N}; }
+Attempt retry_with(double size) {
+  Attempt a;
+  a.kind = Attempt::retry;
+  a.size = size;
+  return a;
+}
+double halved(const Controls& c, double dT) { return std::max(0.5 * dT, c.min_substep); }
+
+// The end of the first stage: P + r1 over dd.
+Point first_stage_end(const Point& P, const Vec3& dd, const Rates& r1) {
+  Point A = P;
+  add(A, r1, 1.0);
+  A.y.separation += dd;
+  return A;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------
+// Forward Euler (docs/model.md 7.2).
+
+Attempt ForwardEuler::attempt(const Point& P, const Vec3& dd, double, const Rates& first_stage) {
+  end_ = first_stage_end(P, dd, first_stage);
+  return step_to(end_);
+}
+
+// ---------------------------------------------------------------------------
+// Modified Euler (docs/model.md 7.1).
+
+Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
+  const Controls& c = M_.controls;
+  const Point A = first_stage_end(P, dd, r1);
+  error_ = 0;
+  const Rates r2 = stage(M_, A, dd);
+  // The second stage entered the snap-back region: halve; at the smallest
+  // substep the first stage alone stands (forward Euler).
+  if (r2.snapback && dT > c.min_substep) return retry_with(halved(c, dT));
+  if (r2.snapback) {
+    st_.min_substep_hit = true;
+    end_ = A;
+  } else {
+    end_ = P;
+    add(end_, r1, 0.5);
+    add(end_, r2, 0.5);
+    end_.y.separation += dd;
+    error_ = local_error(r1, r2, end_);
+  }
+  if (error_ > c.stol && dT > c.min_substep) {
+    last_rejected_ = true;
+    return retry_with(std::max(std::max(0.9 * std::sqrt(c.stol / error_), 0.1) * dT, c.min_substep));
+  }
+  if (error_ > c.stol) st_.min_substep_hit = true;
+  return step_to(end_);
+}
+
+// A Heun substep that ends far outside the surface (an open, damaged joint:
+// the two stages straddle a kink of the flow) is not what the drift
+// correction is for: correcting it can push sigma_n through zero, which the
+// secant damage rule reads as complete normal damage. Such a substep is
+// rejected and halved (docs/robustness.md). Far: beyond 1e-3 of the traction
+// scale, the larger of |sigma| and ft0.
+double ModifiedEuler::recheck(Point& Q, double dT, bool switch_here) {
+  if (switch_here || !(dT > M_.controls.min_substep)) return 0;
+  if (!(yield_of(M_, Q) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0))) return 0;
+  last_rejected_ = true;
+  return halved(M_.controls, dT);
+}
+
+// Not at a switch: the drift correction's plastic displacement would move
+// the point off the boundary again; the switch re-derives the traction in the
+// new regime and returns it to the surface if needed.
+void ModifiedEuler::commit(Point& P, const Point& Q, const Vec3&, double, double, bool switch_here) {
+  P = Q;
+  if (!switch_here) correct_drift(M_, P);
+}
+
+double ModifiedEuler::next_size(double dT) {
+  const Controls& c = M_.controls;
+  double q = std::min(0.9 * std::sqrt(c.stol / std::max(error_, kTiny)), 1.1);
+  if (last_rejected_) q = std::min(q, 1.0);
+  last_rejected_ = false;
+  return std::max(q * dT, c.min_substep);
+}
+
+// Local error of the Heun pair relative to the end values (Sloan et al.
+// 2001, Eq. for R_n+1), over the traction, the softening factor and the
+// wear exponent; the traction norm is floored at 1e-3 ft0 so that states
+// near zero traction do not force endless subdivision.
+double ModifiedEuler::local_error(const Rates& r1, const Rates& r2, const Point& N) const {
+  const double floor = 1e-3 * M_.stress_scale;
+  const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
+  const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC);
+  const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
+  return std::max(e_sigma, std::max(e_s, e_t));
+}
+
+// ---------------------------------------------------------------------------
+// Backward Euler (docs/model.md 7.5).
+
+// The substep budget alone allows millions of Newton iterations (each
+// halving down to min_substep restarts the local solves); a solver waiting
+// on this point would see a hang, so the work is capped too.
+Failure BackwardEuler::budget_spent(const IntegrationStatus& st) const {
+  return st.newton_iterations > kMaxNewtonIterations ? Failure::local_solve_failed : Failure::none;
+}
+
+// The whole plastic part first; a step whose Newton iteration fails is halved
+// (down to the minimum substep, then Failure::local_solve_failed).
+Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates&) {
+  step_ = backward_euler(M_, P, dd, st_);
+  if (!step_.ok && !P.y.open && P.sigma[0] + M_.p.kn * dd[0] > 0) {
+    // No closed-regime solution and a tensile trial: the step may cross into
+    // the open regime where no closed point exists; end it on the boundary.
+    boundary_ = backward_euler_to_boundary(M_, P, dd, st_);
+    if (boundary_.ok) {
+      Attempt a{Attempt::on_boundary, &boundary_.N};
+      a.theta = boundary_.theta;
+      return a;
+    }
+  }
+  if (step_.ok) return step_to(step_.N);
+  if (dT > M_.controls.min_substep) return retry_with(halved(M_.controls, dT));
+  Attempt a{Attempt::fail};
+  a.failure = Failure::local_solve_failed;
+  return a;
+}
+
+void BackwardEuler::before_settle(const Point& Q) {
+  pre_settle_ = Q.y;
+  sigma_pre_settle_ = Q.sigma;
+}
+
+// The end point lies on the surface unless settle() had to keep the secant
+// damage from decreasing (an open step whose frozen-branch solve failed):
+// the traction re-derived from Eq. 1 then differs from the return's. Such a
+// step is halved; at the smallest substep the drift correction of the
+// explicit scheme returns it, and the tangent becomes approximate.
+double BackwardEuler::recheck(Point& Q, double dT, bool switch_here) {
+  drift_corrected_ = false;
+  if (switch_here || !(yield_of(M_, Q) > 10 * yield_tolerance(M_, Q.sigma))) return 0;
+  if (dT > M_.controls.min_substep) return halved(M_.controls, dT);
+  correct_drift(M_, Q);
+  drift_corrected_ = true;
+  return 0;
+}
+
+void BackwardEuler::commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool) {
+  const bool carry = tangent_ && !drift_corrected_;
+  if (carry) {
+    // This step covers dT/(1 - T) of what is left of the increment.
+    Sensitivity& D = *tangent_.D;
+    const Mat3 Ddd = (dT / (1 - T)) * (Mat3::Identity() - D.separation);
+    D = backward_euler_sensitivity(M_, P, dd, step_, D, Ddd);
+  }
+  P = Q;
+  if (carry) settle_sensitivity(M_, pre_settle_, sigma_pre_settle_, P.y, *tangent_.D);
+  if (drift_corrected_) tangent_.forget(st_);
+}
+
+}  // namespace mortar

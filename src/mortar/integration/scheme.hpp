@@ -1,0 +1,123 @@
+// The integration schemes (docs/model.md 7): forward Euler (7.2), modified
+// Euler with error control (7.1) and backward Euler (7.5), each a small
+// strategy behind one interface that the one substepper (substepper.hpp)
+// drives. A scheme says how a substep is attempted, what it checks after
+// settle(), what it does on acceptance and how the next substep is sized;
+// its traits say how a segment treats it. Fourth scheme: one more class here
+// and one more case in integrator.cpp.
+#pragma once
+
+#include "mortar/integration/backward_euler.hpp"
+#include "mortar/integration/rate_statement.hpp"
+#include "mortar/integration/sensitivity.hpp"
+#include "mortar/result.hpp"
+
+namespace mortar {
+
+// How a segment (integration/increment.cpp) treats a scheme.
+struct SchemeTraits {
+  // A segment that starts outside the surface returns to it at fixed
+  // separation first (else the substeps start from there).
+  bool relaxes_start_outside = false;
+  // A point on the surface that the rate statement loads (dF . kS dd > 0, kS
+  // on the damage-growing branch) is plastic however small the increment.
+  bool plastic_when_rate_loading = false;
+  // The elastic-plastic intersection is polished to round-off by Newton, so
+  // that the update is smooth in the increment (a checkable tangent).
+  bool refines_intersection = false;
+  // The tangent is the consistent one (TangentTracker), else the continuum
+  // tangent of Eq. 20 after plastic flow.
+  bool consistent_tangent = false;
+};
+
+// What one attempted substep came to.
+struct Attempt {
+  enum Kind { step, retry, fail, on_boundary } kind = step;
+  const Point* end = nullptr;  // step, on_boundary: the end point before settle() (held by the
+                               // scheme until its next attempt)
+  double size = 0;             // retry: the substep size to try next
+  Failure failure = Failure::none;
+  double theta = 0;            // on_boundary: the fraction of the substep done
+};
+
+class SubstepScheme {
+ public:
+  explicit SubstepScheme(SchemeTraits t) : traits(t) {}
+  const SchemeTraits traits;
+
+  // A budget of the scheme's own spent (checked before each substep).
+  virtual Failure budget_spent(const IntegrationStatus&) const { return Failure::none; }
+  // One substep from P over dd (the fraction dT of the plastic part);
+  // first_stage is the rate statement at P over dd (not a snap-back).
+  virtual Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) = 0;
+  // The end point Q, before settle() (the consistent tangent needs it).
+  virtual void before_settle(const Point&) {}
+  // After settle(): a retry size when the substep is rejected, else 0.
+  virtual double recheck(Point&, double /*dT*/, bool /*switch_here*/) { return 0; }
+  // Accepts Q as the new P; T is the fraction of the plastic part done before.
+  virtual void commit(Point& P, const Point& Q, const Vec3& /*dd*/, double /*T*/, double /*dT*/, bool /*switch_here*/) {
+    P = Q;
+  }
+  // Size of the next substep after an accepted one of size dT.
+  virtual double next_size(double dT) = 0;
+
+ protected:
+  ~SubstepScheme() = default;
+};
+
+// One explicit step of the rate statement per substep, no error control.
+class ForwardEuler final : public SubstepScheme {
+ public:
+  ForwardEuler() : SubstepScheme(SchemeTraits{}) {}
+  Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
+  double next_size(double) override { return 1; }
+
+ private:
+  Point end_;
+};
+
+// The Heun pair with local error control and drift correction (Sloan, Abbo &
+// Sheng 2001).
+class ModifiedEuler final : public SubstepScheme {
+ public:
+  ModifiedEuler(const Model& M, IntegrationStatus& st)
+      : SubstepScheme(SchemeTraits{true, false, false, false}), M_(M), st_(st) {}
+  Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
+  double recheck(Point& Q, double dT, bool switch_here) override;
+  void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
+  double next_size(double dT) override;
+
+ private:
+  double local_error(const Rates& r1, const Rates& r2, const Point& N) const;
+  const Model& M_;
+  IntegrationStatus& st_;
+  Point end_;
+  double error_ = 0;
+  bool last_rejected_ = false;
+};
+
+// Backward-Euler steps (return mapping), halved on a failed local solve, with
+// the consistent tangent carried through every accepted step on request.
+class BackwardEuler final : public SubstepScheme {
+ public:
+  BackwardEuler(const Model& M, IntegrationStatus& st, TangentTracker& tangent)
+      : SubstepScheme(SchemeTraits{false, true, true, true}), M_(M), st_(st), tangent_(tangent) {}
+  Failure budget_spent(const IntegrationStatus& st) const override;
+  Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
+  void before_settle(const Point& Q) override;
+  double recheck(Point& Q, double dT, bool switch_here) override;
+  void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
+  double next_size(double dT) override { return 2 * dT; }
+
+ private:
+  const Model& M_;
+  IntegrationStatus& st_;
+  TangentTracker& tangent_;
+  BackwardEulerStep step_;
+  BoundaryStep boundary_;
+  State pre_settle_;
+  Vec3 sigma_pre_settle_ = Vec3::Zero();
+  bool drift_corrected_ = false;
+};
+
+}  // namespace mortar

@@ -1,0 +1,127 @@
+#include "mortar/integration/substepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mortar/integration/relaxation.hpp"
+
+namespace mortar {
+
+namespace {
+constexpr int kMaxCrossingCuts = 40;  // docs/model.md 6, regime switches inside an increment
+}  // namespace
+
+double Substepper::run(const Vec3& d) {
+  const Controls& c = M.controls;
+  at_boundary_ = false;
+  cut_ = CrossingBracket{};
+  cuts_ = 0;
+  double T = 0, dT = 1;
+  // Every pass of the loop counts against the budget, so no path through
+  // it (cuts, relaxations) can spin forever.
+  for (long pass = 0; T < 1; ++pass) {
+    if (st.substeps_accepted + st.substeps_rejected >= c.max_substeps || pass >= 4L * c.max_substeps) {
+      st.failure = Failure::too_many_substeps;
+      return T;
+    }
+    if (const Failure f = scheme.budget_spent(st); f != Failure::none) {
+      st.failure = f;
+      return T;
+    }
+    dT = std::min(dT, 1 - T);
+    const Vec3 dd = dT * d;
+    const Rates r1 = stage(M, P, dd);
+    if (r1.snapback) {  // no strain-driven solution from here
+      if (!relax(M, P, st, true)) {
+        st.failure = Failure::relaxation_failed;
+        return T;
+      }
+      tangent.forget(st);
+      continue;
+    }
+    const Attempt a = scheme.attempt(P, dd, dT, r1);
+    if (a.kind == Attempt::retry) {
+      dT = a.size;
+      ++st.substeps_rejected;
+      continue;
+    }
+    if (a.kind == Attempt::fail) {
+      st.failure = a.failure;
+      return T;
+    }
+    if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
+    const Crossing crossing_kind = crossing(*a.end, dd, dT);
+    if (crossing_kind == Crossing::from_boundary) {
+      at_boundary_ = true;
+      return T;
+    }
+    if (crossing_kind == Crossing::cut) continue;
+    const bool switch_here = crossing_kind == Crossing::ends_on_boundary;
+    Point Q = *a.end;
+    if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
+    scheme.before_settle(Q);
+    settle(M, Q, P.y.elastic_separation());
+    if (const double retry = scheme.recheck(Q, dT, switch_here); retry > 0) {
+      dT = retry;
+      ++st.substeps_rejected;
+      continue;
+    }
+    scheme.commit(P, Q, dd, T, dT, switch_here);
+    ++st.substeps_accepted;
+    T += dT;
+    if (switch_here) {
+      at_boundary_ = true;
+      return std::min(T, 1.0);
+    }
+    dT = scheme.next_size(dT);
+  }
+  return 1;
+}
+
+// A switch of regime inside the substep: the substep is shortened to end on
+// the boundary delta_e_n = 0 (regula falsi on the substep size, with
+// bisection as a safeguard, bracketed between a size that stays in the
+// regime and one that crosses), then the regime switches there.
+Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double& dT) {
+  const double e0 = P.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
+  const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(M, N.y);
+  const bool crossed = crosses(P.y.open, e1);
+  if (crossed && std::abs(e0) <= boundary_eps(M, P.y)) return Crossing::from_boundary;
+  bool on_boundary = false;
+  if (crossed || cut_.active) {
+    if (!cut_.active) {
+      cut_ = CrossingBracket{true, 0.0, e0, dT, e1};
+    } else if (crossed) {
+      cut_.hi = dT;
+      cut_.e_hi = e1;
+    } else {
+      cut_.lo = dT;
+      cut_.e_lo = e1;
+    }
+    if (std::abs(e1) > near && cuts_ < kMaxCrossingCuts) {
+      dT = cut_.next(cuts_);
+      ++cuts_;
+      return Crossing::cut;
+    }
+    on_boundary = crossed || std::abs(e1) <= near;
+  }
+  cuts_ = 0;
+  cut_ = CrossingBracket{};
+  return on_boundary ? Crossing::ends_on_boundary : Crossing::none;
+}
+
+// The implicit scheme's step that ends on the regime boundary (BoundaryStep):
+// accepted there, with delta_e_n = 0 exactly; `done` is the fraction of the
+// plastic part it reaches.
+double Substepper::end_on_boundary(const Point& N, double done) {
+  const Vec3 e_start = P.y.elastic_separation();
+  P = N;
+  P.y.plastic[0] = P.y.separation[0];
+  settle(M, P, e_start);
+  tangent.forget(st);
+  ++st.substeps_accepted;
+  at_boundary_ = true;
+  return std::min(done, 1.0);
+}
+
+}  // namespace mortar

@@ -1,0 +1,55 @@
+// The one substepper of the plastic part of a segment, for every scheme
+// (docs/model.md 7.1, 7.2, 7.5): the substep budget, the return at fixed
+// separation where the rate statement has no strain-driven solution, the
+// regime-crossing bracket that ends a substep on the boundary delta_e_n = 0
+// (6), settle() and the step-size control, which the scheme (scheme.hpp)
+// steers.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "mortar/integration/root_finder.hpp"
+#include "mortar/integration/scheme.hpp"
+
+namespace mortar {
+
+class Substepper {
+ public:
+  Substepper(const Model& M, Point& P, IntegrationStatus& st, TangentTracker& tangent, SubstepScheme& scheme)
+      : M(M), P(P), st(st), tangent(tangent), scheme(scheme) {}
+
+  // Plastic substepping over the separation increment d, starting on the
+  // surface. Returns the fraction of d done: 1, or less when the regime
+  // switched inside (the point is then on the regime boundary) or on failure
+  // (st.failure set).
+  double run(const Vec3& d);
+  bool at_boundary() const { return at_boundary_; }  // the last run() stopped on the regime boundary
+
+ private:
+  // What the crossing bracket makes of a substep that ends at N.
+  enum class Crossing {
+    none,              // stays in the regime: accept
+    cut,               // crossed (or bracketing): retry with the new dT
+    ends_on_boundary,  // ends on delta_e_n = 0: accept and switch there
+    from_boundary,     // P is on the boundary already and the step moves across
+  };
+  Crossing crossing(const Point& N, const Vec3& dd, double& dT);
+  double end_on_boundary(const Point& N, double done);
+
+  const Model& M;
+  Point& P;
+  IntegrationStatus& st;
+  TangentTracker& tangent;
+  SubstepScheme& scheme;
+  bool at_boundary_ = false;
+  CrossingBracket cut_;
+  int cuts_ = 0;
+};
+
+// Round-off scale of the regime boundary delta_e_n = 0 at a state.
+inline double boundary_eps(const Model& M, const State& y) {
+  return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.p.ft0 / M.p.kn});
+}
+
+}  // namespace mortar

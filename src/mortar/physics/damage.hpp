@@ -1,0 +1,49 @@
+// Damage and the unilateral regime (docs/model.md 6): the secant damage rule,
+// which branch of the open regime a plastic increment is on, and the
+// disintegration of a joint with no strength left. Knows nothing of
+// integration schemes.
+#pragma once
+
+#include <cmath>
+
+#include "mortar/parameters.hpp"
+#include "mortar/state.hpp"
+
+namespace mortar {
+
+// Whether the open-regime growing branch keeps the secant damage from
+// decreasing for a plastic increment dp: d (dd - dp) <= b dp along the
+// elastic separation (docs/model.md 6).
+inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const double e = y.elastic_separation()[0];
+  if (!(e > 0)) return true;
+  return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
+}
+
+inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
+  const Vec3 e = y.elastic_separation();
+  const double es = std::hypot(e[1], e[2]);
+  if (!(es > 0)) return true;
+  const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
+  const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
+  return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
+}
+
+// An open joint with no strength left (s = 0) can only carry zero traction:
+// its surface is the apex of the cone, so the damage is complete (d = 1).
+// The elastic energy this releases is booked as damage dissipation.
+void disintegrate_if_no_strength(const Model& M, State& y);
+
+// After plastic flow: damage follows the secant through the plastic
+// displacement while the joint is open (docs/model.md 6), never decreases,
+// and the traction `sigma` is then re-derived from Eq. 1 so that traction
+// and state always agree. The energy released by the damage growth is booked
+// as damage dissipation, 1/2 kbar (delta_e)^2 dd, trapezoidal in delta_e from
+// e_start (the elastic separation at the start of the step).
+void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start);
+
+// Whether an elastic normal separation e_n lies across the regime boundary
+// from a joint in the given regime (Eq. 13: h = 1 for e_n > 0).
+inline bool crosses(bool open, double e_n) { return open ? e_n < 0 : e_n > 0; }
+
+}  // namespace mortar

@@ -1,0 +1,61 @@
+// Elasticity of the joint: the secant relation (Eq. 1) with the stiffness of
+// Eq. 21, and the stiffnesses of the rate statement (docs/model.md 6).
+// Knows nothing of integration schemes.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "mortar/parameters.hpp"
+#include "mortar/state.hpp"
+
+namespace mortar {
+
+// Stiffnesses of the rate statement (docs/model.md 6), per component:
+//   closed:                 dsigma = kbar (dd - m dl)
+//   open, damage growing:   dsigma = kbar (dd - (1 + b) m dl)   (the paper's Eq. 16-17)
+//   open, damage frozen:    dsigma = kbar (1 - d) (dd - m dl)   (secant, Eq. 1)
+// The open "growing" branch holds while the secant damage it implies does not
+// decrease; where it would, damage is frozen (it never decreases) and the
+// component follows its secant. A component whose damage is complete carries
+// no traction in the open regime, so both of its stiffnesses are zero.
+struct RateStiffness {
+  Vec3 on_separation;  // multiplies the separation increment
+  Vec3 on_flow;        // multiplies m dl
+};
+inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n = true, bool grow_s = true) {
+  const Parameters& p = M.p;
+  if (!y.open) return {Vec3(p.kn, p.ks, p.ks), Vec3(p.kn, p.ks, p.ks)};
+  auto component = [](double k, double b, double d, bool grow, double& on_sep, double& on_flow) {
+    if (d >= 1) { on_sep = on_flow = 0; return; }
+    on_sep = grow ? k : k * (1 - d);
+    on_flow = grow ? k * (1 + b) : k * (1 - d);
+  };
+  RateStiffness r;
+  component(p.kn, p.bn, y.dn, grow_n, r.on_separation[0], r.on_flow[0]);
+  component(p.ks, p.bs, y.ds, grow_s, r.on_separation[1], r.on_flow[1]);
+  r.on_separation[2] = r.on_separation[1];
+  r.on_flow[2] = r.on_flow[1];
+  return r;
+}
+
+// Elastic stiffness of Eq. 21 with the unilateral factor h of the regime.
+inline Vec3 secant_stiffness(const Model& M, double dn, double ds, bool open) {
+  const double h = open ? 1.0 : 0.0;
+  return Vec3(M.p.kn * (1 - dn * h), M.p.ks * (1 - ds * h), M.p.ks * (1 - ds * h));
+}
+
+// Eq. 1: the traction is always the secant relation of the current state.
+inline Vec3 traction_of(const Model& M, const State& y) {
+  return secant_stiffness(M, y.dn, y.ds, y.open).cwiseProduct(y.elastic_separation());
+}
+
+// Elastic energy per unit area, 1/2 sigma . (delta - delta_p).
+inline double elastic_energy(const Model& M, const State& y) {
+  const Vec3 e = y.elastic_separation();
+  return 0.5 * secant_stiffness(M, y.dn, y.ds, y.open).cwiseProduct(e).dot(e);
+}
+
+// Crack-to-plastic ratios per component (Eq. 17: delta_cr = b o delta_p).
+inline Vec3 crack_ratio(const Model& M) { return Vec3(M.p.bn, M.p.bs, M.p.bs); }
+
+}  // namespace mortar

@@ -1,0 +1,37 @@
+// What one increment reports besides the state: traction, energy terms and
+// the integration status (docs/model.md 7, 9).
+#pragma once
+
+#include "mortar/failure.hpp"
+#include "mortar/state.hpp"
+
+namespace mortar {
+
+struct IntegrationStatus {
+  int substeps_accepted = 0;
+  int substeps_rejected = 0;
+  int regime_switches = 0;    // open <-> closed inside the increment
+  int relaxations = 0;        // returns at fixed separation (closure jump, snap-back)
+  bool plastic = false;       // any plastic flow in the increment
+  bool min_substep_hit = false;  // a substep was accepted at the minimum size above STOL
+  Failure failure = Failure::none;
+  int newton_iterations = 0;     // implicit scheme: Newton iterations of all local solves
+  // The tangent returned on request is not the exact derivative of this
+  // update: an explicit scheme (continuum tangent, Eq. 20), a return at fixed
+  // separation, or a regime switch in an increment with plastic flow (the
+  // switch point is held fixed); docs/model.md 7.5.
+  bool tangent_approximate = false;
+  bool ok() const { return failure == Failure::none; }
+};
+
+// Result of one increment: the traction at its end and the energy terms.
+struct IncrementResult {
+  Vec3 traction = Vec3::Zero();   // law signs: sigma_n > 0 tension
+  double elastic_energy = 0;      // at the end of the increment [N/mm]
+  double d_dissipation_plastic = 0;
+  double d_dissipation_damage = 0;
+  double d_energy_unilateral = 0;
+  IntegrationStatus status;
+};
+
+}  // namespace mortar
