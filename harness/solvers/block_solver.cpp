@@ -1,0 +1,255 @@
+#include "solvers/block_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/LU>
+
+#include "abi/status.hpp"
+#include "mortar/state.hpp"
+
+namespace mortar::harness {
+
+namespace {
+// Forward-difference step for a separation increment x [mm]: relative to the
+// increment, floored at 1e-10 mm (far above round-off of separations near
+// 1e-3 mm, far below any increment a solver takes).
+double difference_step(double x) { return 1e-7 * (std::abs(x) + 1e-3); }
+}  // namespace
+
+BlockSolver::BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options)
+    : setup_(setup), first_point_(first_point), options_(options), abi_(setup, n_points, first_point) {
+  const size_t n = static_cast<size_t>(n_points);
+  elastic_stiffness_ = Eigen::Vector3d(setup.props.at(0), setup.props.at(1), setup.props.at(1));
+  committed_stress_.assign(abi_.stress_array().size(), 0.0);
+  committed_state_.assign(abi_.state_array().size(), 0.0);
+  committed_sed_.assign(n, 0.0);
+  accepted_stress_ = committed_stress_;
+  accepted_state_ = committed_state_;
+  accepted_sed_ = committed_sed_;
+  accepted_spd_.assign(n, 0.0);
+  accepted_traction_.assign(n, Vec3::Zero());
+  results_.assign(n, PointResult{});
+  d_.assign(n, Vec3::Zero());
+  dx_ = trial_ = trial_traction_ = residual_ = d_;
+  jacobian_.assign(n, Mat3::Identity());
+  lambda_.assign(n, 1.0);
+  ok_.assign(n, 0);
+  converged_ = pending_ = use_elastic_ = stalled_ = ok_;
+  iterations_.assign(n, 0);
+  sweeps_.assign(n, 0);
+  brackets_.assign(n, Bracket{});
+}
+
+void BlockSolver::evaluate(const std::vector<Vec3>& candidate, const CallInfo& info) {
+  // Every trial starts from the committed arrays: the routine may overwrite
+  // stress, state and sed in place.
+  std::copy(committed_stress_.begin(), committed_stress_.end(), abi_.stress_array().begin());
+  std::copy(committed_state_.begin(), committed_state_.end(), abi_.state_array().begin());
+  std::copy(committed_sed_.begin(), committed_sed_.end(), abi_.sed_array().begin());
+  for (int k = 0; k < size(); ++k)
+    abi_.set_separation_increment(k, results_[k].separation[0] + candidate[k][0], candidate[k]);
+  abi_.invoke(info);
+  ++calls_;
+  for (int k = 0; k < size(); ++k) {
+    trial_traction_[k] = abi_.traction(k);
+    ok_[k] = abi_.state(k)[slot::status] == 0.0 && trial_traction_[k].allFinite();
+  }
+}
+
+void BlockSolver::keep(int k) {
+  const int nd = abi_.n_dir(), ns = abi_.n_states();
+  std::copy_n(abi_.stress(k), nd, &accepted_stress_[static_cast<size_t>(k) * nd]);
+  std::copy_n(abi_.state(k), ns, &accepted_state_[static_cast<size_t>(k) * ns]);
+  accepted_sed_[k] = abi_.sed(k);
+  accepted_spd_[k] = abi_.spd(k);
+  accepted_traction_[k] = trial_traction_[k];
+}
+
+void BlockSolver::commit() {
+  committed_stress_ = accepted_stress_;
+  committed_state_ = accepted_state_;
+  committed_sed_ = accepted_sed_;
+  for (int k = 0; k < size(); ++k) {
+    PointResult& r = results_[k];
+    r.separation += d_[k];
+    r.increment = d_[k];
+    r.start_traction = r.traction;
+    r.traction = accepted_traction_[k];
+    r.elastic_energy = accepted_sed_[k];
+    r.dissipation_increment = accepted_spd_[k];
+    r.iterations = iterations_[k];
+  }
+}
+
+BlockSolver::Vec3 BlockSolver::residual_of(int k, const PointTargets& t) const {
+  Vec3 r = Vec3::Zero();
+  for (int j = 0; j < 3; ++j)
+    if (free_component(t, j)) r[j] = trial_traction_[k][j] - t.value[j];
+  return r;
+}
+
+// The undamaged elastic stiffness on the free components: the Jacobian of a
+// closed elastic joint, used when the finite differences are unusable.
+BlockSolver::Mat3 BlockSolver::elastic_jacobian(const PointTargets& t) const {
+  Mat3 J = Mat3::Identity();
+  for (int j = 0; j < 3; ++j)
+    if (free_component(t, j)) J(j, j) = elastic_stiffness_[j];
+  return J;
+}
+
+void BlockSolver::fail(int k, const CallInfo& info, const std::string& why) const {
+  std::ostringstream msg;
+  msg << failure_location(first_point_ + k, info.step, info.increment) << why;
+  const double status = abi_.state(k)[slot::status];
+  if (status != 0.0) {
+    msg << " (the routine reported status " << status << " in SDV" << slot::status + 1 << ": "
+        << status_meaning(status) << ")";
+  }
+  throw RunFailure(msg.str());
+}
+
+void BlockSolver::reference_call(const CallInfo& info) {
+  for (int k = 0; k < size(); ++k) d_[k].setZero();
+  evaluate(d_, info);
+  for (int k = 0; k < size(); ++k) {
+    if (!ok_[k]) fail(k, info, "the first (reference) call failed");
+    keep(k);
+    iterations_[k] = 0;
+    results_[k].traction_residual = 0;
+  }
+  commit();
+}
+
+void BlockSolver::advance(const PointTargets* targets, const CallInfo& info) {
+  start(targets, info);
+  const double tol = options_.traction_tolerance;
+  for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
+    if (std::all_of(converged_.begin(), converged_.end(), [](char c) { return c != 0; })) break;
+    newton_step(targets, info);
+    if (std::any_of(stalled_.begin(), stalled_.end(), [](char c) { return c != 0; })) bracket_sweep(targets, info);
+  }
+  for (int k = 0; k < size(); ++k) {
+    if (converged_[k]) continue;
+    std::ostringstream why;
+    why << "the traction target was not reached within " << options_.max_iterations
+        << " iterations: residual " << max_abs(residual_[k]) << " MPa, tolerance " << tol << " MPa";
+    fail(k, info, why.str());
+  }
+  commit();
+  for (int k = 0; k < size(); ++k) results_[k].traction_residual = max_abs(residual_[k]);
+}
+
+// Predictor and first evaluation. Displacement-controlled components are
+// known; free ones start from the previous increment of the same point (a
+// secant predictor), or from rest when that call fails.
+void BlockSolver::start(const PointTargets* targets, const CallInfo& info) {
+  const int n = size();
+  bool any_free = false;
+  for (int k = 0; k < n; ++k) {
+    const PointTargets& t = targets[k];
+    for (int j = 0; j < 3; ++j) {
+      if (free_component(t, j)) {
+        d_[k][j] = results_[k].increment[j];
+        any_free = true;
+      } else {
+        d_[k][j] = t.value[j] - results_[k].separation[j];
+      }
+    }
+    iterations_[k] = sweeps_[k] = 0;
+    use_elastic_[k] = stalled_[k] = 0;
+  }
+  evaluate(d_, info);
+  bool retry = false;
+  for (int k = 0; k < n; ++k) {
+    if (ok_[k]) continue;
+    if (!any_free) fail(k, info, "the call failed");
+    for (int j = 0; j < 3; ++j)
+      if (free_component(targets[k], j)) d_[k][j] = 0;
+    retry = true;
+  }
+  if (retry) evaluate(d_, info);
+  for (int k = 0; k < n; ++k) {
+    if (!ok_[k]) fail(k, info, "the call failed");
+    keep(k);
+    residual_[k] = residual_of(k, targets[k]);
+    converged_[k] = max_abs(residual_[k]) <= options_.traction_tolerance;
+  }
+}
+
+// One Newton update of every unconverged point: forward-difference Jacobian
+// (one call per free component, all points perturbed at once), then
+// backtracking. A point whose step reduces nothing even with the elastic
+// Jacobian is marked stalled.
+void BlockSolver::newton_step(const PointTargets* targets, const CallInfo& info) {
+  const int n = size();
+  const double tol = options_.traction_tolerance;
+  for (int k = 0; k < n; ++k) jacobian_[k].setIdentity();
+  for (int j = 0; j < 3; ++j) {
+    bool needed = false;
+    for (int k = 0; k < n; ++k) {
+      trial_[k] = d_[k];
+      if (!converged_[k] && !use_elastic_[k] && free_component(targets[k], j)) {
+        trial_[k][j] += difference_step(d_[k][j]);
+        needed = true;
+      }
+    }
+    if (!needed) continue;
+    evaluate(trial_, info);
+    for (int k = 0; k < n; ++k) {
+      if (converged_[k] || use_elastic_[k] || !free_component(targets[k], j)) continue;
+      if (!ok_[k]) {
+        use_elastic_[k] = 1;
+        continue;
+      }
+      const double h = trial_[k][j] - d_[k][j];
+      for (int i = 0; i < 3; ++i)
+        if (free_component(targets[k], i))
+          jacobian_[k](i, j) = (trial_traction_[k][i] - accepted_traction_[k][i]) / h;
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    pending_[k] = 0;
+    if (converged_[k]) continue;
+    ++iterations_[k];
+    const Mat3 J = use_elastic_[k] ? elastic_jacobian(targets[k]) : jacobian_[k];
+    Vec3 step = -J.fullPivLu().solve(residual_[k]);
+    if (!step.allFinite() || step.isZero(0.0)) step = -elastic_jacobian(targets[k]).fullPivLu().solve(residual_[k]);
+    dx_[k] = step;
+    lambda_[k] = 1.0;
+    pending_[k] = 1;
+  }
+  for (int halving = 0; halving <= options_.max_halvings; ++halving) {
+    bool any = false;
+    for (int k = 0; k < n; ++k) {
+      trial_[k] = pending_[k] ? Vec3(d_[k] + lambda_[k] * dx_[k]) : d_[k];
+      any = any || pending_[k];
+    }
+    if (!any) break;
+    evaluate(trial_, info);
+    for (int k = 0; k < n; ++k) {
+      if (!pending_[k]) continue;
+      const Vec3 r = residual_of(k, targets[k]);
+      if (ok_[k] && max_abs(r) < max_abs(residual_[k])) {
+        d_[k] = trial_[k];
+        keep(k);
+        residual_[k] = r;
+        converged_[k] = max_abs(r) <= tol;
+        pending_[k] = 0;
+      } else {
+        lambda_[k] *= 0.5;
+      }
+    }
+  }
+  for (int k = 0; k < n; ++k) {
+    if (!pending_[k]) continue;
+    // No decrease along this direction: the finite-difference Jacobian
+    // straddled a kink, or the residual has a local minimum here. Try the
+    // elastic Jacobian once, then bracket.
+    if (use_elastic_[k]) stalled_[k] = 1;
+    use_elastic_[k] = 1;
+  }
+}
+
+}  // namespace mortar::harness

@@ -1,0 +1,94 @@
+// The mock solver's work on one block of points for one increment: mixed
+// control through the ABI. Each component of each point is either
+// displacement-controlled (its separation at the end of the increment is
+// given) or traction-controlled (its traction at the end of the increment is
+// given and its separation increment is unknown). The unknown increments are
+// found the way an implicit solver finds them: Newton iterations with a
+// forward-difference Jacobian and backtracking, every trial a call of
+// vuinteraction_ on a COPY of the block's state and stress arrays at the start
+// of the increment; the converged trial is then committed.
+//
+// Every decision (convergence, step length, fall-backs) is taken per point
+// from that point's own numbers, so a point's result does not depend on the
+// block it is in or on its neighbours (MODEL.md invariant 8 for the harness).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "abi/vuinteraction_call.hpp"
+#include "solvers/mixed_control.hpp"
+
+namespace mortar::harness {
+
+class BlockSolver {
+ public:
+  BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options);
+
+  int size() const { return abi_.size(); }
+  int first_point() const { return first_point_; }
+
+  // Abaqus's first sight of the points: zero penetration, zero slip; the
+  // routine takes this as the reference state. Committed.
+  void reference_call(const CallInfo& info);
+
+  // Solves one increment for every point (targets[k] for point k of the
+  // block) and commits it. Throws RunFailure.
+  void advance(const PointTargets* targets, const CallInfo& info);
+
+  const PointResult& result(int k) const { return results_[k]; }
+  const double* state(int k) const { return &committed_state_[static_cast<size_t>(k) * abi_.n_states()]; }
+  long calls() const { return calls_; }
+
+ private:
+  using Vec3 = Eigen::Vector3d;
+  using Mat3 = Eigen::Matrix3d;
+
+  void evaluate(const std::vector<Vec3>& candidate, const CallInfo& info);
+  void keep(int k);  // the last evaluation of point k becomes its accepted result
+  void commit();
+  Vec3 residual_of(int k, const PointTargets& t) const;
+  Mat3 elastic_jacobian(const PointTargets& t) const;
+  void start(const PointTargets* targets, const CallInfo& info);
+  void newton_step(const PointTargets* targets, const CallInfo& info);
+  void bracket_sweep(const PointTargets* targets, const CallInfo& info);
+  void bracket_component(int j, const PointTargets* targets, const CallInfo& info);
+  [[noreturn]] void fail(int k, const CallInfo& info, const std::string& why) const;
+
+  AbiSetup setup_;
+  int first_point_;
+  MixedControlOptions options_;
+  AbiBlock abi_;  // the arrays of every call (trial copies)
+  long calls_ = 0;
+  Eigen::Vector3d elastic_stiffness_;  // kn, ks, ks from props: a fall-back Jacobian
+
+  // Committed arrays (Abaqus layout and signs) and per-point results.
+  std::vector<double> committed_stress_, committed_state_, committed_sed_;
+  std::vector<PointResult> results_;
+  // Accepted trial per point, committed at the end of the increment.
+  std::vector<double> accepted_stress_, accepted_state_, accepted_sed_, accepted_spd_;
+  std::vector<Vec3> accepted_traction_;
+
+  // Work arrays of the Newton iterations, allocated once.
+  std::vector<Vec3> d_, dx_, trial_, trial_traction_, residual_;
+  std::vector<Mat3> jacobian_;
+  std::vector<double> lambda_;
+  std::vector<char> ok_, converged_, pending_, use_elastic_, stalled_;
+  std::vector<int> iterations_, sweeps_;
+  // The search for the root of one free traction of one point, along its
+  // separation increment x with the other components fixed.
+  struct Bracket {
+    enum Phase { idle, expanding, refining, done, failed } phase = idle;
+    double x0 = 0, f0 = 0;       // where the search started and the residual there
+    double step = 0;             // current expansion step from x0
+    int direction = 1, doublings = 0, turns = 0;
+    double a = 0, fa = 0, b = 0, fb = 0;  // bracket: fa and fb of opposite signs
+    int refinements = 0;
+    double x = 0;                // the trial of the current evaluation
+  };
+  std::vector<Bracket> brackets_;
+};
+
+}  // namespace mortar::harness

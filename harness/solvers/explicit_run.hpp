@@ -1,0 +1,46 @@
+// Runs a scene through vuinteraction_, the way Abaqus/Explicit would: the
+// reference call, then per increment and per block of points the
+// mixed-control solve of solvers/block_solver.hpp.
+#pragma once
+
+#include <functional>
+
+#include "input/protocol.hpp"
+#include "mortar/parameters.hpp"
+#include "scenes/scene.hpp"
+#include "solvers/block_solver.hpp"
+#include "solvers/sample.hpp"
+
+namespace mortar::harness {
+
+struct RunSettings {
+  Scheme scheme = Scheme::modified_euler;  // props(15)
+  double stol = 0;                         // props(16); 0 keeps the routine's default
+  int points = 1;
+  int block = 512;  // at most this many points per call, as Abaqus's nBlock
+  MixedControlOptions mixed;
+  // Optional: point k's targets (displacements and tractions) multiplied by
+  // target_scale(k) (scenes/joint_test.hpp).
+  std::function<double(int)> target_scale;
+};
+
+struct RunStatistics {
+  long increments = 0;
+  long calls = 0;  // calls of vuinteraction_, all blocks
+  int blocks = 0;
+  double seconds = 0;
+  double max_traction_residual = 0;
+  int max_iterations = 0;
+};
+
+// Runs every point of `scene` (settings.points and target_scale are the
+// scene's business here) and hands every point's sample of every increment
+// to `sink` (points in order within an increment). Throws RunFailure.
+RunStatistics run_scene(const Parameters& parameters, Scene& scene, const RunSettings& settings,
+                        const SampleSink& sink, const ProgressSink& progress = {});
+
+// The joint test (scenes/joint_test.hpp) of `protocol` on settings.points points.
+RunStatistics run_protocol(const Parameters& parameters, const Protocol& protocol, const RunSettings& settings,
+                           const SampleSink& sink, const ProgressSink& progress = {});
+
+}  // namespace mortar::harness
