@@ -108,9 +108,4 @@ BenchResult run_bench(const BenchOptions& options, std::ostream& err);
 const BenchRow* cheapest_reaching(const BenchResult& r, const std::string& path, const std::string& scheme,
                                   double target);
 
-// `masonry-joint bench`: runs the study, writes the files, prints the
-// summary. Returns the exit status: 0, or 1 when a reference moved by
-// kReferenceRequired or more when tightened, or a chart could not be drawn.
-int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err);
-
 }  // namespace mortar::harness

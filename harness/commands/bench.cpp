@@ -1,9 +1,8 @@
-// `masonry-joint bench`: the study (bench/study.cpp), its files
-// (bench/report.hpp) and charts (bench/plots.hpp).
+#include "commands/bench.hpp"
+
 #include <algorithm>
 #include <ostream>
 
-#include "bench/bench.hpp"
 #include "bench/plots.hpp"
 #include "bench/report.hpp"
 #include "output/plots.hpp"

@@ -9,11 +9,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "bench/bench.hpp"
+#include "commands/bench.hpp"
 #include "commands/inp.hpp"
 #include "commands/run.hpp"
 #include "input/input_error.hpp"
-#include "validation/validate.hpp"
+#include "commands/validate.hpp"
 
 #ifndef MJ_CALIBRATION_DATA_DIR
 #define MJ_CALIBRATION_DATA_DIR "calibration_data"

@@ -12,6 +12,7 @@
 #include "input/parameter_file.hpp"
 #include "output/progress.hpp"
 #include "input/protocol.hpp"
+#include "scenes/joint_test.hpp"
 #include "solvers/explicit_run.hpp"
 
 namespace mortar::harness {
@@ -79,6 +80,40 @@ void summary(const RunArgs& a, const ImplicitStatistics& st, std::ostream& err) 
   err << "run: wrote " << a.out << "\n";
 }
 
+// The run CSV (point 1's rows) and the progress line around one solver run.
+class RunOutput {
+ public:
+  explicit RunOutput(const RunArgs& a) : file_(a.out), csv_(a.out), progress_("run", a.quiet) {
+    if (!csv_) throw InputError(file_ + ": cannot open the file for writing");
+    write_run_header(csv_);
+  }
+  void write(const Sample& s) { write_run_row(csv_, s); }
+  ProgressSink progress() {
+    return [this](long done, long total) { progress_.update(done, total); };
+  }
+  // Runs `solve`; false (and the reason on `err`) when it throws RunFailure.
+  template <class Solve>
+  bool complete(const Solve& solve, std::ostream& err) {
+    try {
+      solve();
+    } catch (const RunFailure& e) {
+      progress_.finish();
+      err << "masonry-joint run: " << e.what() << "\n"
+          << "masonry-joint run: " << file_ << " holds the increments up to the failure\n";
+      return false;
+    }
+    progress_.finish();
+    csv_.close();
+    if (!csv_) throw InputError(file_ + ": write failed");
+    return true;
+  }
+
+ private:
+  std::string file_;
+  std::ofstream csv_;
+  Progress progress_;
+};
+
 // --solver implicit: one point through UINTER.
 int run_implicit(const RunArgs& a, std::ostream& err) {
   ImplicitSettings settings;
@@ -88,26 +123,19 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
   settings.options.max_cuts = a.max_cuts;
   const ParameterSet params = read_parameter_file(a.params);
   const Protocol protocol = read_protocol_file(a.protocol);
-  std::ofstream out(a.out);
-  if (!out) throw InputError(a.out + ": cannot open the file for writing");
-  write_run_header(out);
-  Progress progress("run", a.quiet);
+  JointTest scene(protocol, 1);
+  RunOutput output(a);
   ResidualSink residuals;
   if (a.print_residuals) residuals = [&](const ResidualSequence& r) { err << "residuals: " << describe(r) << "\n"; };
   ImplicitStatistics stats;
-  try {
-    stats = run_protocol_implicit(
-        params.values, protocol, settings, [&](int, const Sample& s) { write_run_row(out, s); },
-        [&](long done, long total) { progress.update(done, total); }, residuals);
-  } catch (const RunFailure& e) {
-    progress.finish();
-    err << "masonry-joint run: " << e.what() << "\n"
-        << "masonry-joint run: " << a.out << " holds the increments up to the failure\n";
-    return 1;
-  }
-  progress.finish();
-  out.close();
-  if (!out) throw InputError(a.out + ": write failed");
+  const bool completed = output.complete(
+      [&] {
+        stats = run_scene_implicit(
+            params.values, scene, settings, [&](int, const Sample& s) { output.write(s); }, output.progress(),
+            residuals);
+      },
+      err);
+  if (!completed) return 1;
   if (!a.quiet) summary(a, stats, err);
   return 0;
 }
@@ -128,52 +156,43 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
   RunSettings settings;
   settings.scheme = scheme_names().at(a.scheme.empty() ? "modified-euler" : a.scheme);
   settings.stol = a.stol;
-  settings.points = a.points;
   settings.block = a.block;
   settings.mixed.traction_tolerance = a.traction_tol;
-
-  std::ofstream out(a.out);
-  if (!out) throw InputError(a.out + ": cannot open the file for writing");
-  write_run_header(out);
+  JointTest scene(protocol, a.points);
+  RunOutput output(a);
   // Point 1 is written; every other point must reproduce it exactly, since
   // all points are identical and blocks must not matter.
   Sample first;
   double worst = 0;
-  Progress progress("run", a.quiet);
   RunStatistics stats;
-  try {
-    stats = run_protocol(
-        params.values, protocol, settings,
-        [&](int point, const Sample& s) {
-          if (point == 0) {
-            first = s;
-            write_run_row(out, s);
-          } else {
-            worst = std::max(worst, difference(s, first));
-          }
-        },
-        [&](long done, long total) { progress.update(done, total); });
-  } catch (const RunFailure& e) {
-    progress.finish();
-    err << "masonry-joint run: " << e.what() << "\n"
-              << "masonry-joint run: " << a.out << " holds the increments up to the failure\n";
-    return 1;
-  }
-  progress.finish();
-  out.close();
-  if (!out) throw InputError(a.out + ": write failed");
+  const bool completed = output.complete(
+      [&] {
+        stats = run_scene(
+            params.values, scene, settings,
+            [&](int point, const Sample& s) {
+              if (point == 0) {
+                first = s;
+                output.write(s);
+              } else {
+                worst = std::max(worst, difference(s, first));
+              }
+            },
+            output.progress());
+      },
+      err);
+  if (!completed) return 1;
   if (!a.quiet) {
     err << "run: " << stats.increments << " increments x " << a.points << " point(s) in " << stats.blocks
-              << " block(s): " << stats.calls << " calls of vuinteraction_ in " << stats.seconds << " s\n"
-              << "run: Newton updates per increment at most " << stats.max_iterations
-              << "; largest controlled-traction residual " << stats.max_traction_residual << " MPa (tolerance "
-              << a.traction_tol << " MPa)\n";
+        << " block(s): " << stats.calls << " calls of vuinteraction_ in " << stats.seconds << " s\n"
+        << "run: Newton updates per increment at most " << stats.max_iterations
+        << "; largest controlled-traction residual " << stats.max_traction_residual << " MPa (tolerance "
+        << a.traction_tol << " MPa)\n";
     if (a.points > 1) err << "run: largest difference of any point from point 1: " << worst << "\n";
     err << "run: wrote " << a.out << "\n";
   }
   if (worst != 0) {
     err << "masonry-joint run: identical points gave different results (largest difference " << worst
-              << "): the result depends on the blocking\n";
+        << "): the result depends on the blocking\n";
     return 1;
   }
   return 0;

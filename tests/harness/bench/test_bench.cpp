@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "bench.hpp"
-#include "bench_drive.hpp"
-#include "bench_paths.hpp"
-#include "checks.hpp"
+#include "bench/bench.hpp"
+#include "bench/drive.hpp"
+#include "bench/paths.hpp"
+#include "validation/checks.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;

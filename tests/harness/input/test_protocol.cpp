@@ -1,55 +1,12 @@
-// Parameter files, loading programs and the input-deck block: what is read
-// is what was written, and the compact cycle notation expands as documented.
+// Loading programs: components that are not given hold what they did, and
+// the compact cycle notation expands into legs as documented.
 #include <catch2/catch.hpp>
 
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
-
-#include "harness_test_support.hpp"
-#include "inp.hpp"
-#include "input_error.hpp"
+#include "support.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
 using namespace mortar::harness::testing;
-
-TEST_CASE("A parameter file gives the 14 values of Table 1 and where each was written", "[inputs]") {
-  // Act
-  const ParameterSet set = read_parameter_file(std::string(MJ_CALIBRATION_DATA_DIR) + "/almeida_tension/params_M34.toml");
-  // Assert
-  const double table1[kParameterCount] = {750.5, 312.7, 0.91, 1.37, 0.00293, 0.02925, 40,
-                                          32,    2944.5, 8,   0,    4923.8,  10,      3};
-  for (int i = 0; i < kParameterCount; ++i) {
-    CAPTURE(kParameterInfo[i].name);
-    CHECK(parameter_at(set.values, i) == table1[i]);
-    CHECK(set.line[i] == i + 4);  // three comment lines, then one parameter per line
-  }
-}
-
-TEST_CASE("Bare numbers are read in the documented units; integers count as numbers", "[inputs]") {
-  // Arrange
-  const auto dir = fresh_directory("bare_numbers");
-  const std::string file = write_file(dir / "p.toml",
-                                      "kn = 209.9\nks = 87.4\nft0 = 0.62\nc0 = 0.88\nGIC = 0.00458\nGIIC = 0.058\n"
-                                      "phi0 = 40.97\nphir = 36.87\nm = 1217.7\npsi0 = 27.7\npsir = 0\nn = 1828.3\n"
-                                      "bn = 10\nbs = 3\n");
-  // Act
-  const ParameterSet set = read_parameter_file(file);
-  // Assert
-  CHECK(set.values.psir == 0.0);
-  CHECK(set.values.bn == 10.0);
-  CHECK(set.values.m == 1217.7);
-}
-
-TEST_CASE("A non-finite parameter is an error, not a clamp", "[inputs]") {
-  const auto dir = fresh_directory("nan_param");
-  const std::string file = write_file(dir / "p.toml",
-                                      "kn = nan\nks = 87.4\nft0 = 0.62\nc0 = 0.88\nGIC = 0.00458\nGIIC = 0.058\n"
-                                      "phi0 = 40.97\nphir = 36.87\nm = 1217.7\npsi0 = 27.7\npsir = 0\nn = 1828.3\n"
-                                      "bn = 10\nbs = 3\n");
-  CHECK_THROWS_WITH(read_parameter_file(file), Catch::Contains("p.toml:1: parameter 'kn' must be a finite number"));
-}
 
 TEST_CASE("Unspecified components hold what they did; the first step starts bonded at zero", "[inputs]") {
   // Act
@@ -113,28 +70,4 @@ TEST_CASE("Cycles of a traction-controlled component are refused with the reason
                                       "[[step]]\nincrements = 2\ns1 = { traction = 0.1 }\n"
                                       "[[step]]\ns1 = { cycles = [0.5] }\nmax_increment = 0.1\n");
   CHECK_THROWS_WITH(read_protocol_file(file), Catch::Contains("c.toml:5: step 2 cycles s1, which is traction-controlled"));
-}
-
-TEST_CASE("The input-deck block: header, comments, eight exact props per line", "[inputs]") {
-  // Arrange
-  InpOptions o;
-  o.props = {209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3, 1, 1e-8};
-  o.depvar = 23;
-  std::ostringstream out;
-  // Act
-  write_surface_interaction(out, o);
-  // Assert
-  const std::string text = out.str();
-  CHECK_THAT(text, Catch::Contains("*SURFACE INTERACTION, NAME=MORTAR, USER=INTERACTION, PROPERTIES=16, DEPVAR=23\n"));
-  CHECK_THAT(text, Catch::Contains("\n209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87\n"));
-  CHECK_THAT(text, Catch::Contains("** props(9..16): m psi0 psir n bn bs scheme STOL\n"
-                                   "1217.7, 27.7, 0., 1828.3, 10., 3., 1., 1e-08\n"));
-}
-
-TEST_CASE("Numbers in the input deck read back exactly", "[inputs]") {
-  for (double x : {0.1, 1.0 / 3.0, 209.9, 1e-300, 6.02214076e23, 0.0}) {
-    const std::string s = exact_decimal(x);
-    CAPTURE(s);
-    CHECK(std::strtod(s.c_str(), nullptr) == x);
-  }
 }

@@ -18,11 +18,12 @@
 #include <string>
 #include <vector>
 
-#include "harness_test_support.hpp"
-#include "implicit_command.hpp"
-#include "implicit_runner.hpp"
+#include "abi/props.hpp"
+#include "commands/run.hpp"
 #include "mortar/integrator.hpp"
 #include "mortar/state.hpp"
+#include "solvers/implicit_run.hpp"
+#include "support.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -309,24 +310,4 @@ TEST_CASE("Traction control at a brittle peak with two free components: Newton c
     CHECK(what.find("Newton cycling between two iterates") != std::string::npos);
     CHECK(what.find("three_components.toml:12") != std::string::npos);
   }
-}
-
-TEST_CASE("Solver options are checked against the solver", "[implicit][inputs]") {
-  SolverOptionUse use;
-  use.solver = "implicit";
-  use.points_given = true;
-  use.points = 4;
-  CHECK_THROWS_WITH(check_solver_options(use), Catch::Contains("--points 4 is an option of --solver explicit only"));
-  use.points = 1;  // the default, spelled out: harmless
-  CHECK_NOTHROW(check_solver_options(use));
-  use.block_given = true;
-  CHECK_THROWS_WITH(check_solver_options(use), Catch::Contains("--block 512 is an option of --solver explicit"));
-  SolverOptionUse explicit_use;
-  explicit_use.max_cuts_given = true;
-  explicit_use.max_cuts = 3;
-  CHECK_THROWS_WITH(check_solver_options(explicit_use),
-                    Catch::Contains("--max-cuts 3 is an option of --solver implicit only"));
-  explicit_use.max_cuts_given = false;
-  explicit_use.print_residuals = true;
-  CHECK_THROWS_WITH(check_solver_options(explicit_use), Catch::Contains("--print-residuals is an option of --solver implicit"));
 }

@@ -5,9 +5,10 @@
 
 #include <cmath>
 
-#include "block_solver.hpp"
-#include "harness_test_support.hpp"
+#include "abi/props.hpp"
 #include "mortar/state.hpp"
+#include "solvers/block_solver.hpp"
+#include "support.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -104,9 +105,7 @@ TEST_CASE("A failure the routine reports in SDV21 stops the run with the code an
   AbiSetup setup;
   setup.n_dir = 3;
   setup.n_states = kStateCount;
-  setup.props = props_for(params.values, Scheme::modified_euler, 0);
-  setup.props.resize(19, 0.0);
-  setup.props[17] = 1;
+  setup.props = props_for(params.values, Scheme::modified_euler, 0, 1);
   setup.stiffness_default = params.values.kn;
   BlockSolver block(setup, 0, 3, MixedControlOptions{});
   CallInfo info;

@@ -2,7 +2,7 @@
 // exactly the result it gets alone (MODEL.md invariant 8, through the ABI).
 #include <catch2/catch.hpp>
 
-#include "harness_test_support.hpp"
+#include "support.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "checks.hpp"
-#include "csv.hpp"
-#include "harness_test_support.hpp"
-#include "validate.hpp"
+#include "validation/checks.hpp"
+#include "output/csv.hpp"
+#include "support.hpp"
+#include "commands/validate.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "parameter_file.hpp"
-#include "protocol.hpp"
-#include "runner.hpp"
+#include "input/parameter_file.hpp"
+#include "input/protocol.hpp"
+#include "solvers/explicit_run.hpp"
 
 namespace mortar::harness::testing {
 

@@ -1,4 +1,4 @@
-#include "validation/validate.hpp"
+#include "commands/validate.hpp"
 
 #include <algorithm>
 #include <chrono>
