@@ -1,7 +1,7 @@
 #include "abi/vuinteraction_call.hpp"
 
-#include "abi/vuinteraction_signs.hpp"
 #include "abi/fortran_string.hpp"
+#include "abi/vuinteraction_signs.hpp"
 #include "vuinteraction.h"
 
 static_assert(sizeof(mj_real) == sizeof(double), "the harness drives the double-precision entry point");

@@ -1,5 +1,5 @@
 // `masonry-joint bench`: the work-precision study and the stability map of
-// the three stress-integration schemes (issue 5, items 3 and 4).
+// the three stress-integration schemes.
 //
 // Every scheme (forward Euler; modified Euler at STOL 1e-1 ... 1e-8; the
 // implicit return mapping) is driven displacement-controlled along the

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "validation/calibration_data.hpp"
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
 #include "solvers/explicit_run.hpp"
+#include "validation/calibration_data.hpp"
 
 namespace mortar::harness {
 

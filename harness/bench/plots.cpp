@@ -7,9 +7,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "validation/checks.hpp"
 #include "input/input_error.hpp"
 #include "output/plots.hpp"
+#include "validation/checks.hpp"
 
 namespace mortar::harness {
 

@@ -12,10 +12,10 @@
 
 #include "bench/paths.hpp"
 #include "bench/plots.hpp"
-#include "validation/checks.hpp"
 #include "input/input_error.hpp"
 #include "mortar/integrator.hpp"
 #include "output/plots.hpp"
+#include "validation/checks.hpp"
 
 namespace fs = std::filesystem;
 

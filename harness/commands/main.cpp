@@ -12,8 +12,8 @@
 #include "commands/bench.hpp"
 #include "commands/inp.hpp"
 #include "commands/run.hpp"
-#include "input/input_error.hpp"
 #include "commands/validate.hpp"
+#include "input/input_error.hpp"
 
 #ifndef MJ_CALIBRATION_DATA_DIR
 #define MJ_CALIBRATION_DATA_DIR "calibration_data"

@@ -6,14 +6,14 @@
 #include <fstream>
 #include <ostream>
 
-#include "validation/checks.hpp"
-#include "output/csv.hpp"
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
-#include "output/progress.hpp"
 #include "input/protocol.hpp"
+#include "output/csv.hpp"
+#include "output/progress.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/explicit_run.hpp"
+#include "validation/checks.hpp"
 
 namespace mortar::harness {
 

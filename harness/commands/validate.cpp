@@ -7,14 +7,14 @@
 #include <ostream>
 #include <sstream>
 
-#include "validation/calibration_data.hpp"
-#include "validation/checks.hpp"
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
+#include "input/protocol.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
-#include "input/protocol.hpp"
 #include "solvers/explicit_run.hpp"
+#include "validation/calibration_data.hpp"
+#include "validation/checks.hpp"
 
 namespace fs = std::filesystem;
 

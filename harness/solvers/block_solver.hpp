@@ -10,7 +10,7 @@
 //
 // Every decision (convergence, step length, fall-backs) is taken per point
 // from that point's own numbers, so a point's result does not depend on the
-// block it is in or on its neighbours (MODEL.md invariant 8 for the harness).
+// block it is in or on its neighbours (invariant 8, block invariance: docs/model.md 10).
 #pragma once
 
 #include <string>

@@ -17,7 +17,7 @@ namespace mortar::harness {
 enum class SeriesKind { monotonic_shear, cyclic_shear, tension };
 const char* series_kind_name(SeriesKind k);
 
-// Values an independent implementation reported for a case (MODEL.md 9),
+// Values an independent implementation reported for a case (docs/model.md 8),
 // printed as comparison rows, never checked.
 struct IndependentValues {
   double peak = 0;       // [MPa], 0 when not given

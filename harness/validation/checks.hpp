@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "validation/calibration_data.hpp"
 #include "output/csv.hpp"
 #include "solvers/explicit_run.hpp"
+#include "validation/calibration_data.hpp"
 
 namespace mortar::harness {
 
@@ -38,7 +38,7 @@ struct CheckRow {
   Verdict verdict = Verdict::info;
 };
 
-// The peak shear stress of MODEL.md section 4 at normal traction sigma_n < 0,
+// The peak shear stress of docs/model.md 4 at normal traction sigma_n < 0,
 // recomputed from the parameters: sqrt((beta0 - sigma_n tan phi0)^2 - alpha0^2).
 double closed_form_peak_shear(const Parameters& p, double sigma_n);
 

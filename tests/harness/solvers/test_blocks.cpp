@@ -1,5 +1,5 @@
 // Blocks: a run of many points in blocks of any size gives every point
-// exactly the result it gets alone (MODEL.md invariant 8, through the ABI).
+// exactly the result it gets alone (invariant 8 of docs/model.md 10, through the ABI).
 #include <catch2/catch.hpp>
 
 #include "support.hpp"

@@ -6,10 +6,10 @@
 #include <cmath>
 #include <sstream>
 
-#include "validation/checks.hpp"
+#include "commands/validate.hpp"
 #include "output/csv.hpp"
 #include "support.hpp"
-#include "commands/validate.hpp"
+#include "validation/checks.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -50,7 +50,7 @@ int validate_quietly(const fs::path& root, const std::string& series, std::strin
 }
 }  // namespace
 
-TEST_CASE("The closed-form peak of MODEL.md section 4 for the van der Pluijm set", "[validation]") {
+TEST_CASE("The closed-form peak of docs/model.md 4 for the van der Pluijm set", "[validation]") {
   Parameters p{209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3};
   // sqrt((beta0 - sigma_n tan phi0)^2 - alpha0^2), evaluated independently.
   CHECK(closed_form_peak_shear(p, -0.1) == Approx(0.97652227).epsilon(1e-8));
