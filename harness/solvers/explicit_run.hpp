@@ -1,6 +1,6 @@
-// Runs a scene through vuinteraction_, the way Abaqus/Explicit would: the
-// reference call, then per increment and per block of points the
-// mixed-control solve of solvers/block_solver.hpp.
+// The explicit mock solver: a scene's points in blocks of at most `block`,
+// each block one call of vuinteraction_ per trial, the way Abaqus/Explicit
+// calls it (solvers/block_solver.hpp), run by solvers/scene_run.hpp.
 #pragma once
 
 #include <functional>
@@ -10,27 +10,19 @@
 #include "scenes/scene.hpp"
 #include "solvers/block_solver.hpp"
 #include "solvers/sample.hpp"
+#include "solvers/scene_run.hpp"
 
 namespace mortar::harness {
 
 struct RunSettings {
   Scheme scheme = Scheme::modified_euler;  // props(15)
   double stol = 0;                         // props(16); 0 keeps the routine's default
-  int points = 1;
+  int points = 1;   // run_protocol's joint test: identical points
   int block = 512;  // at most this many points per call, as Abaqus's nBlock
   MixedControlOptions mixed;
-  // Optional: point k's targets (displacements and tractions) multiplied by
-  // target_scale(k) (scenes/joint_test.hpp).
+  // Optional, run_protocol's joint test: point k's targets (displacements
+  // and tractions) multiplied by target_scale(k) (scenes/joint_test.hpp).
   std::function<double(int)> target_scale;
-};
-
-struct RunStatistics {
-  long increments = 0;
-  long calls = 0;  // calls of vuinteraction_, all blocks
-  int blocks = 0;
-  double seconds = 0;
-  double max_traction_residual = 0;
-  int max_iterations = 0;
 };
 
 // Runs every point of `scene` (settings.points and target_scale are the
