@@ -2,7 +2,7 @@
 // owned here, in Fortran layout (DDSDDR column-major), and the call through
 // the C ABI entry point `uinter_` (always double precision). Abaqus/Standard
 // calls UINTER once per contact point and equilibrium iteration, so there is
-// no block: the implicit mock solver (implicit_solver.hpp) owns one of these
+// no block: the implicit mock solver (solvers/implicit_solver.hpp) owns one of these
 // per point.
 //
 // The scene is the simplest one a contact pair gives: local directions equal

@@ -3,7 +3,7 @@
 //
 // Every scheme (forward Euler; modified Euler at STOL 1e-1 ... 1e-8; the
 // implicit return mapping) is driven displacement-controlled along the
-// separation history of every bench path (bench_paths.hpp), discretised at
+// separation history of every bench path (bench/paths.hpp), discretised at
 // every increment size h, through vuinteraction_. Against a reference (modified
 // Euler at a very tight STOL and FTOL, each increment split into short calls,
 // along the same discretised path) it records the

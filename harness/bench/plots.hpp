@@ -1,4 +1,4 @@
-// Charts of `masonry-joint bench`, drawn by gnuplot (plots.hpp runs it):
+// Charts of `masonry-joint bench`, drawn by gnuplot (output/plots.hpp runs it):
 // scripts with their data inline, so each can be restyled and rerun alone.
 //   work_precision.gp      -> work_precision.{png,svg}: error against cost on
 //                             the van der Pluijm -0.5 MPa path (cost per

@@ -1,7 +1,7 @@
-// `masonry-joint run --solver implicit`: the command-line side of the
-// implicit mock solver (implicit_runner.hpp), and the rules that tie the run
-// options to the solver. Kept out of main.cpp so that the CLI file only
-// declares options.
+// `masonry-joint run`: a loading program through either mock solver
+// (--solver explicit: solvers/explicit_run.hpp; --solver implicit:
+// solvers/implicit_run.hpp), and the rules that tie the run options to the
+// solver.
 #pragma once
 
 #include <iosfwd>

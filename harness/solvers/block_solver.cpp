@@ -4,8 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include <Eigen/LU>
-
 #include "abi/status.hpp"
 #include "mortar/state.hpp"
 
@@ -88,15 +86,6 @@ BlockSolver::Vec3 BlockSolver::residual_of(int k, const PointTargets& t) const {
   for (int j = 0; j < 3; ++j)
     if (free_component(t, j)) r[j] = trial_traction_[k][j] - t.value[j];
   return r;
-}
-
-// The undamaged elastic stiffness on the free components: the Jacobian of a
-// closed elastic joint, used when the finite differences are unusable.
-BlockSolver::Mat3 BlockSolver::elastic_jacobian(const PointTargets& t) const {
-  Mat3 J = Mat3::Identity();
-  for (int j = 0; j < 3; ++j)
-    if (free_component(t, j)) J(j, j) = elastic_stiffness_[j];
-  return J;
 }
 
 void BlockSolver::fail(int k, const CallInfo& info, const std::string& why) const {
@@ -213,9 +202,11 @@ void BlockSolver::newton_step(const PointTargets* targets, const CallInfo& info)
     pending_[k] = 0;
     if (converged_[k]) continue;
     ++iterations_[k];
-    const Mat3 J = use_elastic_[k] ? elastic_jacobian(targets[k]) : jacobian_[k];
-    Vec3 step = -J.fullPivLu().solve(residual_[k]);
-    if (!step.allFinite() || step.isZero(0.0)) step = -elastic_jacobian(targets[k]).fullPivLu().solve(residual_[k]);
+    // The undamaged elastic stiffness: the Jacobian of a closed elastic
+    // joint, used when the finite differences are unusable.
+    const Mat3 elastic = elastic_stiffness_.asDiagonal();
+    Vec3 step = -solve_on_free(targets[k], use_elastic_[k] ? elastic : jacobian_[k], residual_[k]);
+    if (!step.allFinite() || step.isZero(0.0)) step = -solve_on_free(targets[k], elastic, residual_[k]);
     dx_[k] = step;
     lambda_[k] = 1.0;
     pending_[k] = 1;

@@ -50,7 +50,6 @@ class BlockSolver {
   void keep(int k);  // the last evaluation of point k becomes its accepted result
   void commit();
   Vec3 residual_of(int k, const PointTargets& t) const;
-  Mat3 elastic_jacobian(const PointTargets& t) const;
   void start(const PointTargets* targets, const CallInfo& info);
   void newton_step(const PointTargets* targets, const CallInfo& info);
   void bracket_sweep(const PointTargets* targets, const CallInfo& info);

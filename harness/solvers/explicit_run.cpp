@@ -34,7 +34,7 @@ class ExplicitSolver : public MockSolver {
   int first_point(int g) const override { return blocks_[g]->first_point(); }
   int group_size(int g) const override { return blocks_[g]->size(); }
 
-  // Abaqus's first sight of the points (block_solver.hpp), step 1, increment 0.
+  // Abaqus's first sight of the points (solvers/block_solver.hpp), step 1, increment 0.
   void start(int g) override { blocks_[g]->reference_call(CallInfo{}); }
 
   void advance(int g, const Scene& scene, int step, long i, const IncrementClock& clock) override {

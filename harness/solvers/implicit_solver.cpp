@@ -4,8 +4,6 @@
 #include <cmath>
 #include <sstream>
 
-#include <Eigen/LU>
-
 #include "abi/status.hpp"
 #include "mortar/state.hpp"
 
@@ -168,16 +166,11 @@ ImplicitPointSolver::Vec3 ImplicitPointSolver::residual(const PointTargets& t) c
 // Solves K_FF x_F = rhs_F with K = DDSDDR of the last call; zero on the
 // displacement-controlled components.
 ImplicitPointSolver::Vec3 ImplicitPointSolver::newton_step(const PointTargets& t, const Vec3& rhs) const {
-  Mat3 K = Mat3::Identity();
-  Vec3 b = Vec3::Zero();
   const int nd = uinter_.n_dir();
-  for (int i = 0; i < nd; ++i) {
-    if (!free_component(t, i)) continue;
-    b[i] = rhs[i];
-    for (int j = 0; j < nd; ++j)
-      if (free_component(t, j)) K(i, j) = uinter_.ddsddr(i, j);
-  }
-  return K.fullPivLu().solve(b);
+  Mat3 K = Mat3::Zero();
+  for (int i = 0; i < nd; ++i)
+    for (int j = 0; j < nd; ++j) K(i, j) = uinter_.ddsddr(i, j);
+  return solve_on_free(t, K, rhs, nd);
 }
 
 // The iterate at the start of an attempt, as Abaqus's absolute RDISP: the

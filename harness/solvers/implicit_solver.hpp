@@ -6,7 +6,7 @@
 // converged call's outputs); PNEWDT < 1 abandons the attempt and retries it
 // with PNEWDT times the size, at most `max_cuts` times per program increment.
 //
-// One attempt, in Abaqus's variables (STRESS, RDISP; uinter_call.hpp):
+// One attempt, in Abaqus's variables (STRESS, RDISP; abi/uinter_call.hpp):
 //   0. the stiffness call: RDISP at the start of the increment, DRDISP = 0
 //      (what Abaqus/Standard's first iteration passes, docs/abaqus.md); its
 //      DDSDDR is the predictor's Jacobian (skipped when nothing is free);

@@ -51,6 +51,12 @@ class RunFailure : public std::runtime_error {
 // The size of a residual: its largest component [MPa].
 inline double max_abs(const Eigen::Vector3d& v) { return v.cwiseAbs().maxCoeff(); }
 
+// The Newton update's linear system on the free (traction-controlled)
+// components F of the first n_dir: solves K_FF x_F = rhs_F, x = 0 elsewhere
+// (identity rows there, so a point with few free components is not singular).
+Eigen::Vector3d solve_on_free(const PointTargets& t, const Eigen::Matrix3d& K, const Eigen::Vector3d& rhs,
+                              int n_dir = 3);
+
 // "point 3, step 2, increment 17: " (point 0-based in, 1-based out).
 std::string failure_location(int point, int step, long increment);
 

@@ -118,3 +118,22 @@ TEST_CASE("A failure the routine reports in SDV21 stops the run with the code an
                     Catch::Contains("point 1, step 1, increment 1: the call failed") &&
                         Catch::Contains("status 1 in SDV21: too many substeps"));
 }
+
+TEST_CASE("The Newton system is solved on the free components only", "[mixed]") {
+  PointTargets t;
+  t.kind = {Control::traction, Control::displacement, Control::traction};
+  Eigen::Matrix3d K;
+  K << 4, 1, 2,  //
+      7, 9, 8,   // the displacement-controlled row and column must not matter
+      1, 5, 3;
+  const Eigen::Vector3d rhs(1.0, 100.0, 2.0);
+  const Eigen::Vector3d x = solve_on_free(t, K, rhs);
+  CHECK(x[1] == 0.0);
+  CHECK(4 * x[0] + 2 * x[2] == Approx(1.0));
+  CHECK(1 * x[0] + 3 * x[2] == Approx(2.0));
+  // Two directions: the third component is never an unknown.
+  const Eigen::Vector3d x2 = solve_on_free(t, K, rhs, 2);
+  CHECK(x2[0] == Approx(0.25));
+  CHECK(x2[2] == 0.0);
+  CHECK(failure_location(2, 3, 17) == "point 3, step 3, increment 17: ");
+}
