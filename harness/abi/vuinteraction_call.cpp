@@ -70,7 +70,7 @@ Eigen::Vector3d AbiBlock::traction(int k) const {
   return t;
 }
 
-void AbiBlock::invoke(const CallInfo& info) {
+void AbiBlock::invoke(const CallTime& info) {
   const int n_nod_state = 1, n_temp = 0, n_fields = 0;
   const int n_props = static_cast<int>(setup_.props.size());
   const int j_flags[3] = {info.step, info.increment, 0};

@@ -15,6 +15,8 @@
 
 #include <Eigen/Core>
 
+#include "abi/call_time.hpp"
+
 namespace mortar::harness {
 
 struct AbiSetup {
@@ -22,14 +24,6 @@ struct AbiSetup {
   int n_states = 0;           // DEPVAR; at least the law's layout (mortar::kStateCount)
   std::vector<double> props;  // props(1..nProps)
   double stiffness_default = 0;  // stiffDflt handed to the routine (Abaqus's penalty guide)
-};
-
-struct CallInfo {
-  int step = 1;            // jFlags(1)
-  int increment = 0;       // jFlags(2)
-  double step_time = 0;    // rData(1)
-  double total_time = 0;   // rData(2)
-  double time_increment = 0;  // rData(3)
 };
 
 class AbiBlock {
@@ -65,7 +59,7 @@ class AbiBlock {
   Eigen::Vector3d traction(int k) const;
 
   // Calls vuinteraction_ once for the whole block.
-  void invoke(const CallInfo& info);
+  void invoke(const CallTime& time);
 
  private:
   static long index(int k, int stride) { return static_cast<long>(k) * stride; }

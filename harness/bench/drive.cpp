@@ -54,11 +54,11 @@ void reference_call(AbiBlock& abi) {
     abi.penetration(k) = 0.0;  // +0, the reference the routine stores
     std::fill_n(abi.dr_disp(k), abi.n_dir(), 0.0);
   }
-  abi.invoke(CallInfo{});
+  abi.invoke(CallTime{});
 }
 
-CallInfo call_info(long increment, long increments) {
-  CallInfo info;
+CallTime call_info(long increment, long increments) {
+  CallTime info;
   info.increment = static_cast<int>(std::min<long>(increment, 2000000000L));
   info.time_increment = 1.0 / double(increments);
   info.step_time = info.total_time = double(increment) / double(increments);
@@ -190,7 +190,7 @@ Timing time_history(const Parameters& p, int n_dir, const SchemeControls& c, con
       if (i <= windows.start[k + 1]) in = call_input(history[i - 1], history[i]);
       else in.opening = kNoContactOpening;
     }
-  std::vector<CallInfo> infos(static_cast<size_t>(W));
+  std::vector<CallTime> infos(static_cast<size_t>(W));
   for (long w = 0; w < W; ++w) infos[w] = call_info(w + 1, W);
   AbiBlock abi(setup_for(p, n_dir, c), P, 0);
   std::vector<double> ns(static_cast<size_t>(repeats));

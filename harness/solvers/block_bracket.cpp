@@ -12,7 +12,7 @@ namespace mortar::harness {
 
 // Solves the free components of the stalled points one after the other
 // (Gauss-Seidel), each by bracketing; Newton resumes afterwards.
-void BlockSolver::bracket_sweep(const PointTargets* targets, const CallInfo& info) {
+void BlockSolver::bracket_sweep(const PointTargets* targets, const CallTime& info) {
   for (int j = 0; j < 3; ++j) bracket_component(j, targets, info);
   for (int k = 0; k < size(); ++k) {
     if (!stalled_[k]) continue;
@@ -27,7 +27,7 @@ void BlockSolver::bracket_sweep(const PointTargets* targets, const CallInfo& inf
   }
 }
 
-void BlockSolver::bracket_component(int j, const PointTargets* targets, const CallInfo& info) {
+void BlockSolver::bracket_component(int j, const PointTargets* targets, const CallTime& info) {
   const int n = size();
   const double tol = options_.traction_tolerance;
   bool any = false;

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "abi/status.hpp"
+#include "abi/vuinteraction_caller.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar::harness {
@@ -17,16 +18,14 @@ double difference_step(double x) { return 1e-7 * (std::abs(x) + 1e-3); }
 }  // namespace
 
 BlockSolver::BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options)
-    : setup_(setup), first_point_(first_point), options_(options), abi_(setup, n_points, first_point) {
-  const size_t n = static_cast<size_t>(n_points);
-  elastic_stiffness_ = Eigen::Vector3d(setup.props.at(0), setup.props.at(1), setup.props.at(1));
-  committed_stress_.assign(abi_.stress_array().size(), 0.0);
-  committed_state_.assign(abi_.state_array().size(), 0.0);
-  committed_sed_.assign(n, 0.0);
-  accepted_stress_ = committed_stress_;
-  accepted_state_ = committed_state_;
-  accepted_sed_ = committed_sed_;
-  accepted_spd_.assign(n, 0.0);
+    : BlockSolver(std::make_unique<VuinteractionCaller>(setup, n_points, first_point), first_point,
+                  Eigen::Vector3d(setup.props.at(0), setup.props.at(1), setup.props.at(1)), options) {}
+
+BlockSolver::BlockSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
+                         const MixedControlOptions& options)
+    : caller_(std::move(caller)), first_point_(first_point), elastic_stiffness_(elastic_stiffness),
+      options_(options) {
+  const size_t n = static_cast<size_t>(caller_->size());
   accepted_traction_.assign(n, Vec3::Zero());
   results_.assign(n, PointResult{});
   d_.assign(n, Vec3::Zero());
@@ -40,43 +39,31 @@ BlockSolver::BlockSolver(const AbiSetup& setup, int first_point, int n_points, c
   brackets_.assign(n, Bracket{});
 }
 
-void BlockSolver::evaluate(const std::vector<Vec3>& candidate, const CallInfo& info) {
-  // Every trial starts from the committed arrays: the routine may overwrite
-  // stress, state and sed in place.
-  std::copy(committed_stress_.begin(), committed_stress_.end(), abi_.stress_array().begin());
-  std::copy(committed_state_.begin(), committed_state_.end(), abi_.state_array().begin());
-  std::copy(committed_sed_.begin(), committed_sed_.end(), abi_.sed_array().begin());
-  for (int k = 0; k < size(); ++k)
-    abi_.set_separation_increment(k, results_[k].separation[0] + candidate[k][0], candidate[k]);
-  abi_.invoke(info);
+void BlockSolver::evaluate(const std::vector<Vec3>& candidate, const CallTime& info) {
+  for (int k = 0; k < size(); ++k) caller_->set_trial(k, results_[k].separation + candidate[k], candidate[k]);
+  caller_->call(info);
   ++calls_;
   for (int k = 0; k < size(); ++k) {
-    trial_traction_[k] = abi_.traction(k);
-    ok_[k] = abi_.state(k)[slot::status] == 0.0 && trial_traction_[k].allFinite();
+    trial_traction_[k] = caller_->traction(k);
+    ok_[k] = caller_->status(k) == 0.0 && trial_traction_[k].allFinite();
   }
 }
 
 void BlockSolver::keep(int k) {
-  const int nd = abi_.n_dir(), ns = abi_.n_states();
-  std::copy_n(abi_.stress(k), nd, &accepted_stress_[static_cast<size_t>(k) * nd]);
-  std::copy_n(abi_.state(k), ns, &accepted_state_[static_cast<size_t>(k) * ns]);
-  accepted_sed_[k] = abi_.sed(k);
-  accepted_spd_[k] = abi_.spd(k);
+  caller_->accept(k);
   accepted_traction_[k] = trial_traction_[k];
 }
 
 void BlockSolver::commit() {
-  committed_stress_ = accepted_stress_;
-  committed_state_ = accepted_state_;
-  committed_sed_ = accepted_sed_;
+  caller_->commit();
   for (int k = 0; k < size(); ++k) {
     PointResult& r = results_[k];
     r.separation += d_[k];
     r.increment = d_[k];
     r.start_traction = r.traction;
     r.traction = accepted_traction_[k];
-    r.elastic_energy = accepted_sed_[k];
-    r.dissipation_increment = accepted_spd_[k];
+    r.elastic_energy = caller_->elastic_energy(k);
+    r.dissipation_increment = caller_->dissipation_increment(k);
     r.iterations = iterations_[k];
   }
 }
@@ -88,10 +75,10 @@ BlockSolver::Vec3 BlockSolver::residual_of(int k, const PointTargets& t) const {
   return r;
 }
 
-void BlockSolver::fail(int k, const CallInfo& info, const std::string& why) const {
+void BlockSolver::fail(int k, const CallTime& info, const std::string& why) const {
   std::ostringstream msg;
   msg << failure_location(first_point_ + k, info.step, info.increment) << why;
-  const double status = abi_.state(k)[slot::status];
+  const double status = caller_->status(k);
   if (status != 0.0) {
     msg << " (the routine reported status " << status << " in SDV" << slot::status + 1 << ": "
         << status_meaning(status) << ")";
@@ -99,7 +86,7 @@ void BlockSolver::fail(int k, const CallInfo& info, const std::string& why) cons
   throw RunFailure(msg.str());
 }
 
-void BlockSolver::reference_call(const CallInfo& info) {
+void BlockSolver::reference_call(const CallTime& info) {
   for (int k = 0; k < size(); ++k) d_[k].setZero();
   evaluate(d_, info);
   for (int k = 0; k < size(); ++k) {
@@ -111,7 +98,7 @@ void BlockSolver::reference_call(const CallInfo& info) {
   commit();
 }
 
-void BlockSolver::advance(const PointTargets* targets, const CallInfo& info) {
+void BlockSolver::advance(const PointTargets* targets, const CallTime& info) {
   start(targets, info);
   const double tol = options_.traction_tolerance;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
@@ -133,7 +120,7 @@ void BlockSolver::advance(const PointTargets* targets, const CallInfo& info) {
 // Predictor and first evaluation. Displacement-controlled components are
 // known; free ones start from the previous increment of the same point (a
 // secant predictor), or from rest when that call fails.
-void BlockSolver::start(const PointTargets* targets, const CallInfo& info) {
+void BlockSolver::start(const PointTargets* targets, const CallTime& info) {
   const int n = size();
   bool any_free = false;
   for (int k = 0; k < n; ++k) {
@@ -171,7 +158,7 @@ void BlockSolver::start(const PointTargets* targets, const CallInfo& info) {
 // (one call per free component, all points perturbed at once), then
 // backtracking. A point whose step reduces nothing even with the elastic
 // Jacobian is marked stalled.
-void BlockSolver::newton_step(const PointTargets* targets, const CallInfo& info) {
+void BlockSolver::newton_step(const PointTargets* targets, const CallTime& info) {
   const int n = size();
   const double tol = options_.traction_tolerance;
   for (int k = 0; k < n; ++k) jacobian_[k].setIdentity();

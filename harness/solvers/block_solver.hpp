@@ -13,11 +13,13 @@
 // block it is in or on its neighbours (invariant 8, block invariance: docs/model.md 10).
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "abi/caller.hpp"
 #include "abi/vuinteraction_call.hpp"
 #include "solvers/mixed_control.hpp"
 
@@ -25,49 +27,50 @@ namespace mortar::harness {
 
 class BlockSolver {
  public:
+  // Points first_point .. first_point + n_points - 1 of the scene through
+  // vuinteraction_ (abi/vuinteraction_caller.hpp).
   BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options);
+  // Through any caller; `elastic_stiffness` (kn, ks, ks) is the fall-back Jacobian.
+  BlockSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
+              const MixedControlOptions& options);
 
-  int size() const { return abi_.size(); }
+  int size() const { return caller_->size(); }
   int first_point() const { return first_point_; }
 
   // Abaqus's first sight of the points: zero penetration, zero slip; the
   // routine takes this as the reference state. Committed.
-  void reference_call(const CallInfo& info);
+  void reference_call(const CallTime& info);
 
   // Solves one increment for every point (targets[k] for point k of the
   // block) and commits it. Throws RunFailure.
-  void advance(const PointTargets* targets, const CallInfo& info);
+  void advance(const PointTargets* targets, const CallTime& info);
 
   const PointResult& result(int k) const { return results_[k]; }
-  const double* state(int k) const { return &committed_state_[static_cast<size_t>(k) * abi_.n_states()]; }
+  const double* state(int k) const { return caller_->state(k); }
   long calls() const { return calls_; }
 
  private:
   using Vec3 = Eigen::Vector3d;
   using Mat3 = Eigen::Matrix3d;
 
-  void evaluate(const std::vector<Vec3>& candidate, const CallInfo& info);
+  void evaluate(const std::vector<Vec3>& candidate, const CallTime& info);
   void keep(int k);  // the last evaluation of point k becomes its accepted result
   void commit();
   Vec3 residual_of(int k, const PointTargets& t) const;
-  void start(const PointTargets* targets, const CallInfo& info);
-  void newton_step(const PointTargets* targets, const CallInfo& info);
-  void bracket_sweep(const PointTargets* targets, const CallInfo& info);
-  void bracket_component(int j, const PointTargets* targets, const CallInfo& info);
-  [[noreturn]] void fail(int k, const CallInfo& info, const std::string& why) const;
+  void start(const PointTargets* targets, const CallTime& info);
+  void newton_step(const PointTargets* targets, const CallTime& info);
+  void bracket_sweep(const PointTargets* targets, const CallTime& info);
+  void bracket_component(int j, const PointTargets* targets, const CallTime& info);
+  [[noreturn]] void fail(int k, const CallTime& info, const std::string& why) const;
 
-  AbiSetup setup_;
+  std::unique_ptr<Caller> caller_;
   int first_point_;
+  Eigen::Vector3d elastic_stiffness_;  // kn, ks, ks: a fall-back Jacobian
   MixedControlOptions options_;
-  AbiBlock abi_;  // the arrays of every call (trial copies)
   long calls_ = 0;
-  Eigen::Vector3d elastic_stiffness_;  // kn, ks, ks from props: a fall-back Jacobian
 
-  // Committed arrays (Abaqus layout and signs) and per-point results.
-  std::vector<double> committed_stress_, committed_state_, committed_sed_;
+  // Per-point results, and the traction of the accepted trial.
   std::vector<PointResult> results_;
-  // Accepted trial per point, committed at the end of the increment.
-  std::vector<double> accepted_stress_, accepted_state_, accepted_sed_, accepted_spd_;
   std::vector<Vec3> accepted_traction_;
 
   // Work arrays of the Newton iterations, allocated once.

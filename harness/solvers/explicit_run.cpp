@@ -35,12 +35,12 @@ class ExplicitSolver : public MockSolver {
   int group_size(int g) const override { return blocks_[g]->size(); }
 
   // Abaqus's first sight of the points (solvers/block_solver.hpp), step 1, increment 0.
-  void start(int g) override { blocks_[g]->reference_call(CallInfo{}); }
+  void start(int g) override { blocks_[g]->reference_call(CallTime{}); }
 
   void advance(int g, const Scene& scene, int step, long i, const IncrementClock& clock) override {
     BlockSolver& b = *blocks_[g];
     for (int k = 0; k < b.size(); ++k) targets_[k] = scene.targets(step, i, b.first_point() + k);
-    CallInfo info;
+    CallTime info;
     info.step = step + 1;
     info.increment = static_cast<int>(i);
     info.time_increment = clock.time_increment;

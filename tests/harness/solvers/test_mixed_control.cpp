@@ -108,7 +108,7 @@ TEST_CASE("A failure the routine reports in SDV21 stops the run with the code an
   setup.props = props_for(params.values, Scheme::modified_euler, 0, 1);
   setup.stiffness_default = params.values.kn;
   BlockSolver block(setup, 0, 3, MixedControlOptions{});
-  CallInfo info;
+  CallTime info;
   block.reference_call(info);
   PointTargets far[3];
   for (PointTargets& t : far) t.value = {0.0, 0.05, 0.0};  // far past the peak in one increment
