@@ -1,15 +1,10 @@
 #include "abi/uinter_call.hpp"
 
+#include "abi/caller.hpp"
 #include "abi/fortran_string.hpp"
 #include "vuinteraction.h"
 
 namespace mortar::harness {
-
-namespace {
-// Abaqus sets PNEWDT to a large value before each call; only a value below 1
-// is a request.
-constexpr double kNoCutRequest = 1e36;
-}  // namespace
 
 UinterPoint::UinterPoint(const UinterSetup& setup, int node)
     : setup_(setup), node_(node), state_(static_cast<size_t>(setup.n_states), 0.0) {
@@ -22,12 +17,12 @@ UinterPoint::UinterPoint(const UinterSetup& setup, int node)
   fortran_string(msname_, "MASTER");
 }
 
-void UinterPoint::invoke(const UinterTime& t) {
+void UinterPoint::invoke(const CallTime& t) {
   const double time[2] = {t.step_time, t.total_time};
   const double dtime = t.time_increment, freqr = 0, area = 1.0, chrlngth = 1.0;
   const int npred = 0, nprops = static_cast<int>(setup_.props.size()), mcrd = 3, linper = 0, lprint = 0;
   int lopenclose = -1, lstate = -1, lsdi = 0;
-  pnewdt_ = kNoCutRequest;
+  pnewdt_ = Caller::kNoSizeRequest;  // as Abaqus sets it before every call
   uinter_(stress_.data(), ddsddr_.data(), amki_.data(), amski_.data(), flux_.data(), ddfddt_.data(),
           ddsddt_.data(), ddfddr_.data(), state_.data(), &sed_, &sfd_, &spd_, &svd_, &scd_, &pnewdt_,
           rdisp_.data(), drdisp_.data(), temp_.data(), dtemp_.data(), predef_.data(), dpred_.data(), time, &dtime,

@@ -18,6 +18,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "abi/call_time.hpp"
+
 namespace mortar::harness {
 
 namespace uinter_signs {
@@ -46,22 +48,20 @@ inline constexpr double kShearSign = 1.0;
 inline constexpr std::array<double, 3> kStressFactor = {-1.0, kShearSign, kShearSign};  // C
 inline constexpr std::array<double, 3> kRdispFactor = {-1.0, kSlipSign, kSlipSign};     // D
 
+// RDISP(j) of a separation component (law signs), and back.
+inline double rdisp_of(int j, double separation) {
+  return j == 0 ? rdisp_normal_for_opening(separation) : kRdispFactor[static_cast<size_t>(j)] * separation;
+}
+inline double separation_of(int j, double rdisp) {
+  return j == 0 ? opening_from_rdisp_normal(rdisp) : rdisp / kRdispFactor[static_cast<size_t>(j)];
+}
+
 }  // namespace uinter_signs
 
 struct UinterSetup {
   int n_dir = 3;              // 2: one slip, 3: two
   int n_states = 0;           // NSTATV; at least the law's layout (mortar::kStateCount)
   std::vector<double> props;  // props(1..NPROPS)
-};
-
-// Abaqus/Standard's counters and times of one call.
-struct UinterTime {
-  int step = 1;               // KSTEP
-  int increment = 1;          // KINC: increment of the step; a cut-back retries the same number
-  int iteration = 0;          // KIT
-  double step_time = 0;       // TIME(1), at the end of the increment
-  double total_time = 0;      // TIME(2)
-  double time_increment = 0;  // DTIME
 };
 
 class UinterPoint {
@@ -89,7 +89,7 @@ class UinterPoint {
   double* drdisp() { return drdisp_.data(); }
 
   // Calls uinter_ once. PNEWDT is set large before the call, as Abaqus does.
-  void invoke(const UinterTime& time);
+  void invoke(const CallTime& time);
 
  private:
   UinterSetup setup_;

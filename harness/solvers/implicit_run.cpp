@@ -32,7 +32,7 @@ class ImplicitSolver : public MockSolver {
 
   // One program increment, from the targets at its start to those at its end.
   void advance(int, const Scene& scene, int step, long i, const IncrementClock& clock) override {
-    UinterTime time;
+    CallTime time;
     time.step = step + 1;
     time.time_increment = clock.time_increment;
     time.step_time = clock.step_time;

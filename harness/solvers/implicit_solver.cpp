@@ -12,19 +12,13 @@ namespace mortar::harness {
 namespace {
 using uinter_signs::kRdispFactor;
 using uinter_signs::kStressFactor;
+using uinter_signs::rdisp_of;
+using uinter_signs::separation_of;
 
 // Two residuals equal to round-off: Newton has entered a cycle (it bounces
 // across a kink of the response, e.g. between the elastic and the plastic
 // branch) and will repeat it for ever.
 bool same(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
-
-// RDISP(j) of a separation component (law signs).
-double rdisp_of(int j, double separation) {
-  return j == 0 ? uinter_signs::rdisp_normal_for_opening(separation) : kRdispFactor[j] * separation;
-}
-double separation_of(int j, double rdisp) {
-  return j == 0 ? uinter_signs::opening_from_rdisp_normal(rdisp) : rdisp / kRdispFactor[j];
-}
 }  // namespace
 
 const char* outcome_name(AttemptOutcome o) {
@@ -39,7 +33,7 @@ const char* outcome_name(AttemptOutcome o) {
 }
 
 ImplicitPointSolver::ImplicitPointSolver(const UinterSetup& setup, const ImplicitOptions& options)
-    : setup_(setup), options_(options), uinter_(setup, 1), committed_state_(static_cast<size_t>(setup.n_states), 0.0) {
+    : options_(options), caller_(setup), n_dir_(setup.n_dir) {
   options_.max_iterations = std::clamp(options_.max_iterations, 1, kMaxRecordedIterations);
   committed_rdisp_[0] = uinter_signs::kReferencePosition;
 }
@@ -57,7 +51,7 @@ PointTargets ImplicitPointSolver::targets_at(const PointTargets& from, const Poi
   return t;
 }
 
-void ImplicitPointSolver::advance(const PointTargets& from, const PointTargets& to, const UinterTime& time, int step,
+void ImplicitPointSolver::advance(const PointTargets& from, const PointTargets& to, const CallTime& time, int step,
                                   long increment, const std::function<void(const ResidualSequence&)>& on_attempt) {
   if (step != step_) solved_in_step_ = 0;
   step_ = step;
@@ -78,7 +72,7 @@ void ImplicitPointSolver::advance(const PointTargets& from, const PointTargets& 
     record.sub_increment = ++sub_increments_;
     record.start = start;
     record.size = end - start;
-    UinterTime t = time;
+    CallTime t = time;
     t.time_increment = record.size * time.time_increment;
     t.step_time = time.step_time - (1.0 - end) * time.time_increment;
     t.total_time = time.total_time - (1.0 - end) * time.time_increment;
@@ -112,27 +106,34 @@ void ImplicitPointSolver::give_up(const ResidualSequence& last, int cuts) const 
   fail(why.str());
 }
 
-// Loads the start of the increment and calls the routine at the relative
-// position `rdisp` (DRDISP = rdisp - start).
-void ImplicitPointSolver::call(const Vec3& rdisp, UinterTime& time) {
-  std::copy(committed_state_.begin(), committed_state_.end(), uinter_.state());
-  const int nd = uinter_.n_dir();
-  for (int i = 0; i < nd; ++i) {
-    uinter_.stress()[i] = committed_stress_[i];
-    uinter_.rdisp()[i] = rdisp[i];
-    uinter_.drdisp()[i] = rdisp[i] - committed_rdisp_[i];
-  }
-  uinter_.sed() = committed_sed_;
-  uinter_.invoke(time);
+// Calls the routine from the start of the increment at the relative
+// position `rdisp` (the caller passes DRDISP = rdisp - start).
+void ImplicitPointSolver::call(const Vec3& rdisp, CallTime& time) {
+  Vec3 end = Vec3::Zero();
+  for (int j = 0; j < n_dir_; ++j) end[j] = separation_of(j, rdisp[j]);
+  caller_.set_trial(0, end, end - result_.separation);
+  caller_.call(time);
   ++time.iteration;
   ++calls_;
+  read_call();
+}
+
+// STRESS = C sigma and DDSDDR = C T D from the caller's traction and tangent.
+void ImplicitPointSolver::read_call() {
+  const Vec3 traction = caller_.traction(0);
+  Mat3 T;
+  caller_.tangent(0, T);
+  for (int i = 0; i < n_dir_; ++i) {
+    stress_[i] = kStressFactor[i] * traction[i];
+    for (int j = 0; j < n_dir_; ++j) ddsddr_(i, j) = kStressFactor[i] * T(i, j) * kRdispFactor[j];
+  }
 }
 
 // True when the routine abandons the attempt (PNEWDT < 1). Anything else the
 // routine reports is a failure of the run: a status without a cut-back
 // request, a PNEWDT that is no factor, a non-finite STRESS or DDSDDR.
 bool ImplicitPointSolver::cut_requested() const {
-  const double pnewdt = uinter_.pnewdt(), status = uinter_.state()[slot::status];
+  const double pnewdt = caller_.size_request(0), status = caller_.status(0);
   std::ostringstream why;
   if (pnewdt < 1.0) {
     if (pnewdt > 0.0) return true;
@@ -144,10 +145,9 @@ bool ImplicitPointSolver::cut_requested() const {
         << status_meaning(status) << ") without asking for a smaller increment (PNEWDT = " << pnewdt << ")";
     fail(why.str());
   }
-  const int nd = uinter_.n_dir();
-  for (int i = 0; i < nd; ++i) {
-    bool finite = std::isfinite(uinter_.stress()[i]);
-    for (int j = 0; j < nd; ++j) finite = finite && std::isfinite(uinter_.ddsddr(i, j));
+  for (int i = 0; i < n_dir_; ++i) {
+    bool finite = std::isfinite(stress_[i]);
+    for (int j = 0; j < n_dir_; ++j) finite = finite && std::isfinite(ddsddr_(i, j));
     if (!finite) fail("the routine returned a non-finite STRESS or DDSDDR without asking for a smaller increment");
   }
   return false;
@@ -158,19 +158,15 @@ bool ImplicitPointSolver::cut_requested() const {
 // up to the sign C_j = +-1.
 ImplicitPointSolver::Vec3 ImplicitPointSolver::residual(const PointTargets& t) const {
   Vec3 r = Vec3::Zero();
-  for (int j = 0; j < uinter_.n_dir(); ++j)
-    if (free_component(t, j)) r[j] = uinter_.stress()[j] - kStressFactor[j] * t.value[j];
+  for (int j = 0; j < n_dir_; ++j)
+    if (free_component(t, j)) r[j] = stress_[j] - kStressFactor[j] * t.value[j];
   return r;
 }
 
 // Solves K_FF x_F = rhs_F with K = DDSDDR of the last call; zero on the
 // displacement-controlled components.
 ImplicitPointSolver::Vec3 ImplicitPointSolver::newton_step(const PointTargets& t, const Vec3& rhs) const {
-  const int nd = uinter_.n_dir();
-  Mat3 K = Mat3::Zero();
-  for (int i = 0; i < nd; ++i)
-    for (int j = 0; j < nd; ++j) K(i, j) = uinter_.ddsddr(i, j);
-  return solve_on_free(t, K, rhs, nd);
+  return solve_on_free(t, ddsddr_, rhs, n_dir_);
 }
 
 // The iterate at the start of an attempt, as Abaqus's absolute RDISP: the
@@ -178,7 +174,7 @@ ImplicitPointSolver::Vec3 ImplicitPointSolver::newton_step(const PointTargets& t
 // where the increment started.
 ImplicitPointSolver::Vec3 ImplicitPointSolver::prescribed(const PointTargets& t) const {
   Vec3 x = committed_rdisp_;
-  for (int j = 0; j < uinter_.n_dir(); ++j)
+  for (int j = 0; j < n_dir_; ++j)
     if (!free_component(t, j)) x[j] = rdisp_of(j, t.value[j]);
   return x;
 }
@@ -187,20 +183,19 @@ ImplicitPointSolver::Vec3 ImplicitPointSolver::prescribed(const PointTargets& t)
 bool ImplicitPointSolver::abandoned(ResidualSequence& record) const {
   if (!cut_requested()) return false;
   record.outcome = AttemptOutcome::cut_by_routine;
-  record.pnewdt = uinter_.pnewdt();
+  record.pnewdt = caller_.size_request(0);
   return true;
 }
 
 // The stiffness call at the start (DRDISP = 0) and the predictor from its
 // DDSDDR: K_FF dx_F = -(STRESS_F - P_F) - K_FD dx_D. False when abandoned.
-bool ImplicitPointSolver::predict(const PointTargets& t, UinterTime& time, Vec3& x, ResidualSequence& record) {
+bool ImplicitPointSolver::predict(const PointTargets& t, CallTime& time, Vec3& x, ResidualSequence& record) {
   const Vec3 d_prescribed = x - committed_rdisp_;
   call(committed_rdisp_, time);
   if (abandoned(record)) return false;
   Vec3 rhs = -residual(t);
-  const int nd = uinter_.n_dir();
-  for (int i = 0; i < nd; ++i)
-    for (int j = 0; j < nd; ++j) rhs[i] -= uinter_.ddsddr(i, j) * d_prescribed[j];
+  for (int i = 0; i < n_dir_; ++i)
+    for (int j = 0; j < n_dir_; ++j) rhs[i] -= ddsddr_(i, j) * d_prescribed[j];
   const Vec3 dx = newton_step(t, rhs);
   if (!dx.allFinite()) {
     record.outcome = AttemptOutcome::diverged;
@@ -226,11 +221,11 @@ bool ImplicitPointSolver::hopeless(ResidualSequence& r) const {
   return false;
 }
 
-AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, UinterTime time, ResidualSequence& record) {
+AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, CallTime time, ResidualSequence& record) {
   time.increment = static_cast<int>(solved_in_step_ + 1);
   time.iteration = 0;
   Vec3 x = prescribed(t);
-  const bool any_free = std::any_of(t.kind.begin(), t.kind.begin() + uinter_.n_dir(),
+  const bool any_free = std::any_of(t.kind.begin(), t.kind.begin() + n_dir_,
                                     [](Control c) { return c == Control::traction; });
   if (any_free && !predict(t, time, x, record)) return record.outcome;
   for (int k = 1; k <= options_.max_iterations; ++k) {
@@ -252,21 +247,19 @@ AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, UinterTime ti
 
 // The converged call's outputs become the start of the next increment.
 void ImplicitPointSolver::commit(const Vec3& rdisp, const ResidualSequence& record) {
-  std::copy_n(uinter_.state(), committed_state_.size(), committed_state_.begin());
-  const int nd = uinter_.n_dir();
-  Vec3 separation = Vec3::Zero(), traction = Vec3::Zero();
-  for (int j = 0; j < nd; ++j) {
-    committed_stress_[j] = uinter_.stress()[j];
+  caller_.accept(0);
+  caller_.commit();
+  Vec3 separation = Vec3::Zero();
+  for (int j = 0; j < n_dir_; ++j) {
     committed_rdisp_[j] = rdisp[j];
     separation[j] = separation_of(j, rdisp[j]);
-    traction[j] = uinter_.stress()[j] / kStressFactor[j];
   }
-  committed_sed_ = uinter_.sed();
+  const Vec3 traction = caller_.traction(0);
   work_increment_ += 0.5 * (result_.traction + traction).dot(separation - result_.separation);
   result_.separation = separation;
   result_.traction = traction;
-  result_.elastic_energy = committed_sed_;
-  result_.dissipation_increment += uinter_.spd();
+  result_.elastic_energy = caller_.elastic_energy(0);
+  result_.dissipation_increment += caller_.dissipation_increment(0);
   result_.iterations += record.count;
   result_.traction_residual = record.residual[static_cast<size_t>(record.count - 1)];
 }

@@ -33,7 +33,7 @@
 
 #include <Eigen/Core>
 
-#include "abi/uinter_call.hpp"
+#include "abi/uinter_caller.hpp"
 #include "solvers/mixed_control.hpp"
 
 namespace mortar::harness {
@@ -73,7 +73,7 @@ class ImplicitPointSolver {
   // `to` (at its end), cutting it back as the routine or Newton asks, and
   // commits it. `time` is the program increment's; `on_attempt` (optional)
   // sees every attempt's residual sequence. Throws RunFailure.
-  void advance(const PointTargets& from, const PointTargets& to, const UinterTime& time, int step, long increment,
+  void advance(const PointTargets& from, const PointTargets& to, const CallTime& time, int step, long increment,
                const std::function<void(const ResidualSequence&)>& on_attempt);
 
   // The committed point (law signs) after the last program increment:
@@ -83,7 +83,7 @@ class ImplicitPointSolver {
   // Trapezoidal external work of the last program increment, summed over its
   // sub-increments [N/mm].
   double work_increment() const { return work_increment_; }
-  const double* state() const { return committed_state_.data(); }
+  const double* state() const { return caller_.state(0); }
   long calls() const { return calls_; }
   // Attempts that ended in each outcome, all program increments so far.
   long attempts(AttemptOutcome o) const { return outcomes_[static_cast<size_t>(o)]; }
@@ -94,12 +94,13 @@ class ImplicitPointSolver {
   using Mat3 = Eigen::Matrix3d;
 
   PointTargets targets_at(const PointTargets& from, const PointTargets& to, double end) const;
-  AttemptOutcome attempt(const PointTargets& targets, UinterTime time, ResidualSequence& record);
+  AttemptOutcome attempt(const PointTargets& targets, CallTime time, ResidualSequence& record);
   Vec3 prescribed(const PointTargets& t) const;
-  bool predict(const PointTargets& t, UinterTime& time, Vec3& x, ResidualSequence& record);
+  bool predict(const PointTargets& t, CallTime& time, Vec3& x, ResidualSequence& record);
   bool abandoned(ResidualSequence& record) const;
   bool hopeless(ResidualSequence& record) const;
-  void call(const Vec3& rdisp, UinterTime& time);
+  void call(const Vec3& rdisp, CallTime& time);
+  void read_call();
   bool cut_requested() const;
   Vec3 residual(const PointTargets& t) const;
   Vec3 newton_step(const PointTargets& t, const Vec3& rhs) const;
@@ -107,9 +108,9 @@ class ImplicitPointSolver {
   [[noreturn]] void give_up(const ResidualSequence& last, int cuts) const;
   [[noreturn]] void fail(const std::string& why) const;
 
-  UinterSetup setup_;
   ImplicitOptions options_;
-  UinterPoint uinter_;
+  UinterCaller caller_;
+  int n_dir_;
   long calls_ = 0;
   std::array<long, 5> outcomes_{};
   int sub_increments_ = 0;
@@ -117,10 +118,12 @@ class ImplicitPointSolver {
   int step_ = 0;         // program step and increment being solved, for messages
   long increment_ = 0;
 
-  // Committed (start-of-increment) arguments, Abaqus's signs.
-  std::vector<double> committed_state_;
-  Vec3 committed_stress_ = Vec3::Zero(), committed_rdisp_ = Vec3::Zero();
-  double committed_sed_ = 0;
+  // RDISP at the start of the increment, and the last call's STRESS and
+  // DDSDDR: Abaqus's variables of the Newton iteration (the caller's law
+  // variables converted exactly, factors of +-1).
+  Vec3 committed_rdisp_ = Vec3::Zero();
+  Vec3 stress_ = Vec3::Zero();
+  Mat3 ddsddr_ = Mat3::Zero();
   PointResult result_;
   double work_increment_ = 0;
 };
