@@ -1,14 +1,15 @@
-// What both mock solvers share: a mixed-control solve of one increment per
-// point, on a COPY of the point's state at the start of the increment, then
-// a commit. Each component is displacement- or traction-controlled
-// (scenes/targets.hpp); the traction-controlled separations are the unknowns
-// of a Newton iteration. The two callers differ only in where the Jacobian
-// comes from and how a hard increment is rescued:
-//  - explicit (solvers/block_solver.hpp, through vuinteraction_, which returns
+// What the mock solvers' mixed-control solves share: one increment per point
+// solved on a COPY of the point's state at the start of the increment (the
+// Caller's committed start, abi/caller.hpp), then committed. Each component
+// is displacement- or traction-controlled (scenes/targets.hpp); the
+// traction-controlled separations are the unknowns of a Newton iteration,
+// whose linear system is solve_on_free below. The two solvers differ in where
+// the Jacobian comes from and how a hard increment is rescued:
+//  - solvers/block_solver.hpp, on any Caller (vuinteraction_'s block returns
 //    no tangent): forward differences, backtracking, and bracketing of a
 //    stalled component;
-//  - implicit (solvers/implicit_solver.hpp, through uinter_): the routine's
-//    DDSDDR, and Abaqus/Standard's cut-backs (PNEWDT, divergence).
+//  - solvers/implicit_solver.hpp, on uinter_'s caller: the routine's DDSDDR,
+//    and Abaqus/Standard's cut-backs (PNEWDT, divergence, cycling).
 #pragma once
 
 #include <stdexcept>
