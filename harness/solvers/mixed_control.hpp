@@ -7,7 +7,8 @@
 // the Jacobian comes from and how a hard increment is rescued:
 //  - solvers/block_solver.hpp, on any Caller (vuinteraction_'s block returns
 //    no tangent): forward differences, backtracking, and bracketing of a
-//    stalled component;
+//    stalled component; through uinter_'s caller it gives the same curve
+//    (tests/harness/solvers/test_mixed_control.cpp);
 //  - solvers/implicit_solver.hpp, on uinter_'s caller: the routine's DDSDDR,
 //    and Abaqus/Standard's cut-backs (PNEWDT, divergence, cycling).
 #pragma once
