@@ -25,7 +25,7 @@ class ExplicitSolver : public MockSolver {
     const int points = scene.points();
     for (int first = 0; first < points; first += block_) {
       const int count = std::min(block_, points - first);
-      blocks_.push_back(std::make_unique<BlockSolver>(setup, first, count, settings.mixed));
+      blocks_.push_back(std::make_unique<MixedControlSolver>(setup, first, count, settings.mixed));
     }
     targets_.assign(static_cast<size_t>(std::min(block_, points)), PointTargets{});
   }
@@ -34,11 +34,11 @@ class ExplicitSolver : public MockSolver {
   int first_point(int g) const override { return blocks_[g]->first_point(); }
   int group_size(int g) const override { return blocks_[g]->size(); }
 
-  // Abaqus's first sight of the points (solvers/block_solver.hpp), step 1, increment 0.
+  // Abaqus's first sight of the points (solvers/mixed_control_solver.hpp), step 1, increment 0.
   void start(int g) override { blocks_[g]->reference_call(CallTime{}); }
 
   void advance(int g, const Scene& scene, int step, long i, const IncrementClock& clock) override {
-    BlockSolver& b = *blocks_[g];
+    MixedControlSolver& b = *blocks_[g];
     for (int k = 0; k < b.size(); ++k) targets_[k] = scene.targets(step, i, b.first_point() + k);
     CallTime info;
     info.step = step + 1;
@@ -63,10 +63,10 @@ class ExplicitSolver : public MockSolver {
   }
 
  private:
-  const BlockSolver& block_of(int point) const { return *blocks_[static_cast<size_t>(point / block_)]; }
+  const MixedControlSolver& block_of(int point) const { return *blocks_[static_cast<size_t>(point / block_)]; }
 
   int block_;
-  std::vector<std::unique_ptr<BlockSolver>> blocks_;
+  std::vector<std::unique_ptr<MixedControlSolver>> blocks_;
   std::vector<PointTargets> targets_;  // of the block being solved
 };
 

@@ -1,6 +1,6 @@
 // The explicit mock solver: a scene's points in blocks of at most `block`,
 // each block one call of vuinteraction_ per trial, the way Abaqus/Explicit
-// calls it (solvers/block_solver.hpp), run by solvers/scene_run.hpp.
+// calls it (solvers/mixed_control_solver.hpp), run by solvers/scene_run.hpp.
 #pragma once
 
 #include <functional>
@@ -8,7 +8,7 @@
 #include "input/protocol.hpp"
 #include "mortar/parameters.hpp"
 #include "scenes/scene.hpp"
-#include "solvers/block_solver.hpp"
+#include "solvers/mixed_control_solver.hpp"
 #include "solvers/sample.hpp"
 #include "solvers/scene_run.hpp"
 

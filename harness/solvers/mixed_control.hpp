@@ -5,7 +5,7 @@
 // traction-controlled separations are the unknowns of a Newton iteration,
 // whose linear system is solve_on_free below. The two solvers differ in where
 // the Jacobian comes from and how a hard increment is rescued:
-//  - solvers/block_solver.hpp, on any Caller (vuinteraction_'s block returns
+//  - solvers/mixed_control_solver.hpp, on any Caller (vuinteraction_'s block returns
 //    no tangent): forward differences, backtracking, and bracketing of a
 //    stalled component; through uinter_'s caller it gives the same curve
 //    (tests/harness/solvers/test_mixed_control.cpp);

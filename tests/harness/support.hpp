@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
 #include "solvers/explicit_run.hpp"
@@ -15,9 +17,25 @@ namespace mortar::harness::testing {
 
 inline std::string data_file(const std::string& name) { return std::string(MJ_TEST_DATA_DIR) + "/" + name; }
 
-// A fresh, empty folder under the system's temporary directory.
+// The folders fresh_directory made, removed when the test process ends.
+struct TemporaryFolders {
+  std::vector<std::filesystem::path> made;
+  ~TemporaryFolders() {
+    std::error_code ignored;
+    for (const auto& dir : made) std::filesystem::remove_all(dir, ignored);
+  }
+};
+inline TemporaryFolders& temporary_folders() {
+  static TemporaryFolders folders;
+  return folders;
+}
+
+// A fresh, empty folder under the system's temporary directory, of this
+// process alone (test runs of several builds may share the machine).
 inline std::filesystem::path fresh_directory(const std::string& name) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("mj_harness_test_" + name);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("mj_harness_test_" + name + "_" + std::to_string(::getpid()));
+  temporary_folders().made.push_back(dir);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

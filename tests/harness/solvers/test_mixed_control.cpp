@@ -12,7 +12,7 @@
 #include "abi/vuinteraction_caller.hpp"
 #include "mortar/state.hpp"
 #include "scenes/joint_test.hpp"
-#include "solvers/block_solver.hpp"
+#include "solvers/mixed_control_solver.hpp"
 #include "support.hpp"
 
 using namespace mortar;
@@ -112,7 +112,7 @@ TEST_CASE("A failure the routine reports in SDV21 stops the run with the code an
   setup.n_states = kStateCount;
   setup.props = props_for(params.values, Scheme::modified_euler, 0, 1);
   setup.stiffness_default = params.values.kn;
-  BlockSolver block(setup, 0, 3, MixedControlOptions{});
+  MixedControlSolver block(setup, 0, 3, MixedControlOptions{});
   CallTime info;
   block.reference_call(info);
   PointTargets far[3];
@@ -155,14 +155,14 @@ TEST_CASE("One mixed-control solver, either caller: the same curve through vuint
   setup.props = props;
   setup.stiffness_default = p.kn;
   const Eigen::Vector3d elastic(p.kn, p.ks, p.ks);
-  BlockSolver through_vuinteraction(std::make_unique<VuinteractionCaller>(setup, 1, 0), 0, elastic, {});
-  BlockSolver through_uinter(
+  MixedControlSolver through_vuinteraction(std::make_unique<VuinteractionCaller>(setup, 1, 0), 0, elastic, {});
+  MixedControlSolver through_uinter(
       std::make_unique<UinterCaller>(UinterSetup{protocol.directions, kStateCount, props}), 0, elastic, {});
   JointTest scene(protocol, 1);
   // Act
   double worst = 0;
   long increments = 0;
-  for (BlockSolver* b : {&through_vuinteraction, &through_uinter}) b->reference_call(CallTime{});
+  for (MixedControlSolver* b : {&through_vuinteraction, &through_uinter}) b->reference_call(CallTime{});
   for (int s = 0; s < scene.steps(); ++s) {
     const PointResult& r = through_vuinteraction.result(0);
     scene.begin_step(s, 0, r.separation, r.traction);
@@ -171,7 +171,7 @@ TEST_CASE("One mixed-control solver, either caller: the same curve through vuint
       CallTime time;
       time.step = s + 1;
       time.increment = static_cast<int>(i);
-      for (BlockSolver* b : {&through_vuinteraction, &through_uinter}) b->advance(&t, time);
+      for (MixedControlSolver* b : {&through_vuinteraction, &through_uinter}) b->advance(&t, time);
       const PointResult &a = through_vuinteraction.result(0), &u = through_uinter.result(0);
       worst = std::max({worst, (a.traction - u.traction).cwiseAbs().maxCoeff(),
                         (a.separation - u.separation).cwiseAbs().maxCoeff()});

@@ -1,12 +1,13 @@
-// The mock solver's work on one block of points for one increment: mixed
-// control through the ABI. Each component of each point is either
-// displacement-controlled (its separation at the end of the increment is
-// given) or traction-controlled (its traction at the end of the increment is
-// given and its separation increment is unknown). The unknown increments are
-// found the way an implicit solver finds them: Newton iterations with a
-// forward-difference Jacobian and backtracking, every trial a call of
-// vuinteraction_ on a COPY of the block's state and stress arrays at the start
-// of the increment; the converged trial is then committed.
+// The mixed-control solver: one increment of a group of points (a block of
+// vuinteraction_, or uinter_'s point) through a Caller (abi/caller.hpp). Each
+// component of each point is either displacement-controlled (its separation
+// at the end of the increment is given) or traction-controlled (its traction
+// at the end of the increment is given and its separation increment is
+// unknown). The unknown increments are found the way an implicit solver
+// finds them: Newton iterations with a forward-difference Jacobian and
+// backtracking, every trial a call from the committed start of the
+// increment; the converged trial is then committed. `--solver explicit` runs
+// it over blocks of vuinteraction_ (solvers/explicit_run.hpp).
 //
 // Every decision (convergence, step length, fall-backs) is taken per point
 // from that point's own numbers, so a point's result does not depend on the
@@ -25,13 +26,13 @@
 
 namespace mortar::harness {
 
-class BlockSolver {
+class MixedControlSolver {
  public:
   // Points first_point .. first_point + n_points - 1 of the scene through
   // vuinteraction_ (abi/vuinteraction_caller.hpp).
-  BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options);
+  MixedControlSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options);
   // Through any caller; `elastic_stiffness` (kn, ks, ks) is the fall-back Jacobian.
-  BlockSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
+  MixedControlSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
               const MixedControlOptions& options);
 
   int size() const { return caller_->size(); }

@@ -1,4 +1,4 @@
-#include "solvers/block_solver.hpp"
+#include "solvers/mixed_control_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,11 +17,11 @@ namespace {
 double difference_step(double x) { return 1e-7 * (std::abs(x) + 1e-3); }
 }  // namespace
 
-BlockSolver::BlockSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options)
-    : BlockSolver(std::make_unique<VuinteractionCaller>(setup, n_points, first_point), first_point,
+MixedControlSolver::MixedControlSolver(const AbiSetup& setup, int first_point, int n_points, const MixedControlOptions& options)
+    : MixedControlSolver(std::make_unique<VuinteractionCaller>(setup, n_points, first_point), first_point,
                   Eigen::Vector3d(setup.props.at(0), setup.props.at(1), setup.props.at(1)), options) {}
 
-BlockSolver::BlockSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
+MixedControlSolver::MixedControlSolver(std::unique_ptr<Caller> caller, int first_point, const Eigen::Vector3d& elastic_stiffness,
                          const MixedControlOptions& options)
     : caller_(std::move(caller)), first_point_(first_point), elastic_stiffness_(elastic_stiffness),
       options_(options) {
@@ -39,7 +39,7 @@ BlockSolver::BlockSolver(std::unique_ptr<Caller> caller, int first_point, const 
   brackets_.assign(n, Bracket{});
 }
 
-void BlockSolver::evaluate(const std::vector<Vec3>& candidate, const CallTime& info) {
+void MixedControlSolver::evaluate(const std::vector<Vec3>& candidate, const CallTime& info) {
   for (int k = 0; k < size(); ++k) caller_->set_trial(k, results_[k].separation + candidate[k], candidate[k]);
   caller_->call(info);
   ++calls_;
@@ -49,12 +49,12 @@ void BlockSolver::evaluate(const std::vector<Vec3>& candidate, const CallTime& i
   }
 }
 
-void BlockSolver::keep(int k) {
+void MixedControlSolver::keep(int k) {
   caller_->accept(k);
   accepted_traction_[k] = trial_traction_[k];
 }
 
-void BlockSolver::commit() {
+void MixedControlSolver::commit() {
   caller_->commit();
   for (int k = 0; k < size(); ++k) {
     PointResult& r = results_[k];
@@ -68,14 +68,14 @@ void BlockSolver::commit() {
   }
 }
 
-BlockSolver::Vec3 BlockSolver::residual_of(int k, const PointTargets& t) const {
+MixedControlSolver::Vec3 MixedControlSolver::residual_of(int k, const PointTargets& t) const {
   Vec3 r = Vec3::Zero();
   for (int j = 0; j < 3; ++j)
     if (free_component(t, j)) r[j] = trial_traction_[k][j] - t.value[j];
   return r;
 }
 
-void BlockSolver::fail(int k, const CallTime& info, const std::string& why) const {
+void MixedControlSolver::fail(int k, const CallTime& info, const std::string& why) const {
   std::ostringstream msg;
   msg << failure_location(first_point_ + k, info.step, info.increment) << why;
   const double status = caller_->status(k);
@@ -86,7 +86,7 @@ void BlockSolver::fail(int k, const CallTime& info, const std::string& why) cons
   throw RunFailure(msg.str());
 }
 
-void BlockSolver::reference_call(const CallTime& info) {
+void MixedControlSolver::reference_call(const CallTime& info) {
   for (int k = 0; k < size(); ++k) d_[k].setZero();
   evaluate(d_, info);
   for (int k = 0; k < size(); ++k) {
@@ -98,7 +98,7 @@ void BlockSolver::reference_call(const CallTime& info) {
   commit();
 }
 
-void BlockSolver::advance(const PointTargets* targets, const CallTime& info) {
+void MixedControlSolver::advance(const PointTargets* targets, const CallTime& info) {
   start(targets, info);
   const double tol = options_.traction_tolerance;
   for (int iteration = 1; iteration <= options_.max_iterations; ++iteration) {
@@ -120,7 +120,7 @@ void BlockSolver::advance(const PointTargets* targets, const CallTime& info) {
 // Predictor and first evaluation. Displacement-controlled components are
 // known; free ones start from the previous increment of the same point (a
 // secant predictor), or from rest when that call fails.
-void BlockSolver::start(const PointTargets* targets, const CallTime& info) {
+void MixedControlSolver::start(const PointTargets* targets, const CallTime& info) {
   const int n = size();
   bool any_free = false;
   for (int k = 0; k < n; ++k) {
@@ -158,7 +158,7 @@ void BlockSolver::start(const PointTargets* targets, const CallTime& info) {
 // (one call per free component, all points perturbed at once), then
 // backtracking. A point whose step reduces nothing even with the elastic
 // Jacobian is marked stalled.
-void BlockSolver::newton_step(const PointTargets* targets, const CallTime& info) {
+void MixedControlSolver::newton_step(const PointTargets* targets, const CallTime& info) {
   const int n = size();
   const double tol = options_.traction_tolerance;
   for (int k = 0; k < n; ++k) jacobian_[k].setIdentity();

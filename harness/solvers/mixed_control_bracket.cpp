@@ -1,18 +1,19 @@
-// The explicit solver's rescue of a stalled Newton iteration: each free
+// The mixed-control solver's rescue of a stalled Newton iteration: each free
 // component of each stalled point solved alone by bracketing (expansion from
 // the point's elastic stiffness, then Illinois), Gauss-Seidel over the
-// components. Every trial is a call of the whole block, as in block_solver.cpp.
+// components. Every trial is a call of the whole group, as in
+// mixed_control_solver.cpp.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "solvers/block_solver.hpp"
+#include "solvers/mixed_control_solver.hpp"
 
 namespace mortar::harness {
 
 // Solves the free components of the stalled points one after the other
 // (Gauss-Seidel), each by bracketing; Newton resumes afterwards.
-void BlockSolver::bracket_sweep(const PointTargets* targets, const CallTime& info) {
+void MixedControlSolver::bracket_sweep(const PointTargets* targets, const CallTime& info) {
   for (int j = 0; j < 3; ++j) bracket_component(j, targets, info);
   for (int k = 0; k < size(); ++k) {
     if (!stalled_[k]) continue;
@@ -27,7 +28,7 @@ void BlockSolver::bracket_sweep(const PointTargets* targets, const CallTime& inf
   }
 }
 
-void BlockSolver::bracket_component(int j, const PointTargets* targets, const CallTime& info) {
+void MixedControlSolver::bracket_component(int j, const PointTargets* targets, const CallTime& info) {
   const int n = size();
   const double tol = options_.traction_tolerance;
   bool any = false;
