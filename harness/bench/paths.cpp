@@ -1,0 +1,202 @@
+#include "bench/paths.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "input/parameter_file.hpp"
+#include "input/protocol.hpp"
+#include "solvers/explicit_run.hpp"
+#include "validation/calibration_data.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+double polyline_length(const std::vector<Vec3>& leg) {
+  double L = 0;
+  for (size_t i = 1; i < leg.size(); ++i) L += (leg[i] - leg[i - 1]).norm();
+  return L;
+}
+
+// Appends the n points at arc lengths L*j/n, j = 1..n, of the polyline.
+void sample_leg(const std::vector<Vec3>& leg, int n, std::vector<Vec3>& out) {
+  const double L = polyline_length(leg);
+  size_t seg = 1;
+  double seg_start = 0;  // arc length at leg[seg - 1]
+  for (int j = 1; j <= n; ++j) {
+    if (j == n) {  // the corner itself, exactly
+      out.push_back(leg.back());
+      continue;
+    }
+    const double s = L * double(j) / double(n);
+    while (seg + 1 < leg.size() && seg_start + (leg[seg] - leg[seg - 1]).norm() < s) {
+      seg_start += (leg[seg] - leg[seg - 1]).norm();
+      ++seg;
+    }
+    const double len = (leg[seg] - leg[seg - 1]).norm();
+    const double f = len > 0 ? std::clamp((s - seg_start) / len, 0.0, 1.0) : 1.0;
+    out.push_back(leg[seg - 1] + f * (leg[seg] - leg[seg - 1]));
+  }
+}
+
+// The separation history a mixed-control run went through, one leg per
+// program step.
+std::vector<std::vector<Vec3>> history_of_run(const Parameters& p, const Protocol& protocol, Scheme scheme,
+                                              double stol) {
+  RunSettings settings;
+  settings.scheme = scheme;
+  settings.stol = stol;
+  std::vector<std::vector<Vec3>> legs;
+  Vec3 last = Vec3::Zero();
+  int step = 0;
+  run_protocol(p, protocol, settings, [&](int, const Sample& s) {
+    if (s.increment == 0) return;
+    if (s.step != step) {
+      legs.push_back({last});
+      step = s.step;
+    }
+    legs.back().push_back(s.separation);
+    last = s.separation;
+  });
+  return legs;
+}
+
+// Legs of straight lines between corner points (the origin first).
+std::vector<std::vector<Vec3>> straight_legs(const std::vector<Vec3>& corners) {
+  std::vector<std::vector<Vec3>> legs;
+  Vec3 last = Vec3::Zero();
+  for (const Vec3& c : corners) {
+    legs.push_back({last, c});
+    last = c;
+  }
+  return legs;
+}
+
+ComponentProgram displacement(double target) { return {Control::displacement, target}; }
+ComponentProgram traction(double target) { return {Control::traction, target}; }
+
+// Cyclic shear with sign reversals at sigma_n = -0.1, -0.5 and -1.0 MPa in
+// turn, on one joint: +/-0.04 mm about zero at each (beyond the peak slip of
+// 0.011-0.021 mm of the van der Pluijm tests, so every level reaches the
+// surface and the later ones start from a softened joint). Increments of
+// 1e-5 mm, the finest of the study.
+Protocol cyclic_at_three_normal_stresses() {
+  Protocol p;
+  p.file = "(bench: cyclic shear at three normal stresses)";
+  p.title = "cyclic shear, +/-0.04 mm at sigma_n = -0.1, -0.5, -1.0 MPa";
+  const double amplitude = 0.04, max_increment = 1e-5;
+  double slip = 0;
+  for (double sigma_n : {-0.1, -0.5, -1.0}) {
+    ProgramStep normal;
+    normal.name = "normal stress " + std::to_string(sigma_n);
+    normal.increments = 50;
+    normal.component = {traction(sigma_n), displacement(slip), displacement(0)};
+    p.steps.push_back(normal);
+    for (double target : {amplitude, -amplitude, amplitude, 0.0}) {
+      ProgramStep leg;
+      leg.name = "slip to " + std::to_string(target);
+      leg.increments = std::lround(std::ceil(std::abs(target - slip) / max_increment));
+      leg.component = {traction(sigma_n), displacement(target), displacement(0)};
+      p.steps.push_back(leg);
+      slip = target;
+    }
+  }
+  return p;
+}
+
+// The cyclic program up to the end of its first amplitude's cycles: the
+// later, larger cycles slide at the residual friction (the same smooth
+// response for 24 more mm of travel) and would dominate the run time.
+void keep_first_amplitude(std::vector<std::vector<Vec3>>& legs) {
+  double first = 0;
+  for (size_t i = 0; i < legs.size(); ++i) {
+    const double slip = std::abs(legs[i].back()[1]);
+    if (first == 0 && slip > 0.1) first = slip;  // the end of the first cycle leg
+    if (first > 0 && slip > first * (1 + 1e-9)) {
+      legs.resize(i);
+      return;
+    }
+  }
+}
+
+void add_calibration_paths(const std::string& data_dir, bool quick, std::vector<BenchPath>& paths) {
+  for (const SeriesSpec& series : read_calibration_data(data_dir, {})) {
+    if (quick && series.kind == SeriesKind::cyclic_shear) continue;
+    for (const CaseSpec& c : series.cases) {
+      BenchPath b;
+      b.id = c.name;
+      const Protocol protocol = read_protocol_file(c.protocol_file);
+      b.title = protocol.title.empty() ? c.name : protocol.title;
+      b.parameters = read_parameter_file(c.params_file).values;
+      b.directions = protocol.directions;
+      b.legs = history_of_run(b.parameters, protocol, series.scheme, series.stol);
+      if (series.kind == SeriesKind::cyclic_shear) {
+        keep_first_amplitude(b.legs);
+        b.title += " (to the end of the first amplitude's cycles)";
+      }
+      paths.push_back(std::move(b));
+    }
+  }
+}
+
+void add_mixed_paths(const std::string& data_dir, std::vector<BenchPath>& paths) {
+  const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
+  // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
+  // tangential directions while open, closing into compression, then shear
+  // reversed under compression: every regime switch of the law in one path.
+  paths.push_back({"open_shear_close", "opening, shear (s1, s2) while open, closing, reversed shear closed", p, 3,
+                   straight_legs({{0.004, 0, 0}, {0.004, 0.02, 0.01}, {-0.004, 0.02, 0.01}, {-0.004, -0.02, 0.01}})});
+  {
+    BenchPath b;
+    b.id = "cyclic_three_sigma_n";
+    const Protocol protocol = cyclic_at_three_normal_stresses();
+    b.title = protocol.title;
+    b.parameters = p;
+    b.legs = history_of_run(p, protocol, Scheme::modified_euler, 1e-8);
+    paths.push_back(std::move(b));
+  }
+  // Zig-zag slip while opening past ft0/kn: the traction path crosses
+  // tau = 0 on the tension cap, so large increments jump from one side of
+  // the apex of the hyperbola to the other.
+  paths.push_back({"apex_jumps", "opening with the slip zig-zagging through zero: jumps across the apex", p, 3,
+                   straight_legs({{0.0025, 0.002, 0}, {0.006, -0.002, 0}, {0.010, 0.003, 0}, {0.020, -0.003, 0}})});
+  // Opening to separation (wI -> GIC: s = 0, the surface a cone through the
+  // origin), friction on the softened joint under compression, reopening
+  // (zero traction), sliding back open, and closing again.
+  paths.push_back({"softened_reopened", "full separation, closed friction, reopened, closed again", p, 3,
+                   straight_legs({{0.1, 0, 0},
+                                  {-0.004, 0, 0},
+                                  {-0.004, 0.05, 0},
+                                  {0.05, 0.05, 0},
+                                  {0.05, 0, 0},
+                                  {-0.002, 0, 0},
+                                  {-0.002, 0.03, 0}})});
+}
+
+}  // namespace
+
+std::vector<Vec3> discretise(const BenchPath& path, double h) {
+  std::vector<Vec3> points{Vec3::Zero()};
+  for (const auto& leg : path.legs) {
+    const double L = polyline_length(leg);
+    // The 1e-9 keeps a leg of exactly k*h from getting k+1 parts by round-off.
+    const int n = std::max(1, static_cast<int>(std::ceil(L / h * (1 - 1e-9))));
+    sample_leg(leg, n, points);
+  }
+  return points;
+}
+
+double path_length(const BenchPath& path) {
+  double L = 0;
+  for (const auto& leg : path.legs) L += polyline_length(leg);
+  return L;
+}
+
+std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick) {
+  std::vector<BenchPath> paths;
+  add_calibration_paths(data_dir, quick, paths);
+  add_mixed_paths(data_dir, paths);
+  return paths;
+}
+
+}  // namespace mortar::harness

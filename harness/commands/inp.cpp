@@ -1,0 +1,29 @@
+#include "commands/inp.hpp"
+
+#include "commands/run.hpp"
+#include "input/parameter_file.hpp"
+#include "mortar/state.hpp"
+#include "output/inp_deck.hpp"
+
+namespace mortar::harness {
+
+int inp_command(const InpArgs& a, std::ostream& out) {
+  check_stol(a.stol);
+  const ParameterSet params = read_parameter_file(a.params);
+  Controls c;
+  if (!a.scheme.empty()) c.scheme = scheme_names().at(a.scheme);
+  c.stol = a.stol;
+  const auto props = to_props(params.values, c);
+  // Controls only when asked for: absent props, and zero ones, mean the
+  // routine's defaults.
+  const bool controls = !a.scheme.empty() || a.stol != 0;
+  InpOptions o;
+  o.name = a.name;
+  o.depvar = kStateCount;
+  o.props.assign(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
+  if (controls && a.scheme.empty()) o.props[kParameterCount] = 0.0;
+  write_surface_interaction(out, o);
+  return 0;
+}
+
+}  // namespace mortar::harness

@@ -1,0 +1,127 @@
+// masonry-joint: the mock-solver harness of the mortar-joint law. Drives
+// interface points only through the ABI entry points, vuinteraction_
+// (Abaqus/Explicit) and uinter_ (Abaqus/Standard), as Abaqus would. This file
+// declares the command line; each subcommand is its own file in commands/:
+// run, validate, inp, bench (harness/README.md).
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "commands/bench.hpp"
+#include "commands/inp.hpp"
+#include "commands/run.hpp"
+#include "commands/validate.hpp"
+#include "input/input_error.hpp"
+
+#ifndef MJ_CALIBRATION_DATA_DIR
+#define MJ_CALIBRATION_DATA_DIR "calibration_data"
+#endif
+
+using namespace mortar;
+using namespace mortar::harness;
+
+namespace {
+
+constexpr int kExitChecksFailed = 1;  // a check failed or a run could not be completed
+constexpr int kExitBadInput = 2;      // bad arguments or input files
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"masonry-joint: mock Abaqus/Explicit (VUINTERACTION) and Abaqus/Standard (UINTER) solver for the mortar joint"};
+  app.require_subcommand(1);
+  std::vector<std::string> scheme_names;
+  for (const auto& s : mortar::harness::scheme_names()) scheme_names.push_back(s.first);
+
+  RunArgs run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Run a loading program; one CSV row per increment");
+  run_cmd->add_option("--params", run.params, "Parameter file (TOML)")->required();
+  run_cmd->add_option("--protocol", run.protocol, "Loading program (TOML)")->required();
+  run_cmd->add_option("--scheme", run.scheme,
+                      "Integration scheme, props(15); default modified-euler (--solver explicit), implicit "
+                      "(--solver implicit)")
+      ->check(CLI::IsMember(scheme_names));
+  run_cmd->add_option("--solver", run.solver, "Mock solver: explicit (vuinteraction_), implicit (uinter_)")
+      ->check(CLI::IsMember(std::vector<std::string>(std::begin(kSolverNames), std::end(kSolverNames))))
+      ->capture_default_str();
+  run_cmd->add_option("--max-cuts", run.max_cuts, "--solver implicit: cut-backs allowed per increment")
+      ->check(CLI::Range(0, 20))
+      ->capture_default_str();
+  run_cmd->add_flag("--print-residuals", run.print_residuals,
+                    "--solver implicit: every attempt's residual sequence on stderr");
+  run_cmd->add_option("--stol", run.stol, "Substep error tolerance STOL, props(16); 0 keeps the default 1e-5");
+  run_cmd->add_option("--points", run.points, "Identical interface points")->check(CLI::Range(1, 10000000))
+      ->capture_default_str();
+  run_cmd->add_option("--block", run.block, "Points per call (nBlock), at most")->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
+  run_cmd->add_option("--traction-tol", run.traction_tol, "Tolerance of controlled tractions [MPa]")
+      ->capture_default_str();
+  run_cmd->add_option("--out", run.out, "Output CSV")->required();
+  run_cmd->add_flag("--quiet,-q", run.quiet, "No progress or summary on stderr");
+
+  ValidateOptions val;
+  val.data_dir = MJ_CALIBRATION_DATA_DIR;
+  bool no_plots = false;
+  CLI::App* val_cmd = app.add_subcommand("validate", "Run and check the three test series of calibration_data/");
+  val_cmd->add_option("--out", val.out_dir, "Folder for CSVs, charts and the table")->capture_default_str();
+  val_cmd->add_option("--data", val.data_dir, "The calibration data folder")->capture_default_str();
+  val_cmd->add_option("--series", val.series, "Only this series (folder name); repeatable");
+  val_cmd->add_option("--traction-tol", val.traction_tolerance, "Tolerance of controlled tractions [MPa]")
+      ->capture_default_str();
+  val_cmd->add_flag("--no-plots", no_plots, "Skip the charts");
+  val_cmd->add_flag("--write-references", val.write_references,
+                    "Store the fresh curves as regression baselines (only for cases whose checks all pass)");
+  val_cmd->add_flag("--quiet,-q", val.quiet, "No progress on stderr");
+
+  InpArgs inp;
+  CLI::App* inp_cmd = app.add_subcommand("inp", "Print the *SURFACE INTERACTION block for a parameter file");
+  inp_cmd->add_option("--params", inp.params, "Parameter file (TOML)")->required();
+  inp_cmd->add_option("--scheme", inp.scheme, "Also write props(15) (and props(16))")
+      ->check(CLI::IsMember(scheme_names));
+  inp_cmd->add_option("--stol", inp.stol, "Also write props(16) = STOL (and props(15))");
+  inp_cmd->add_option("--name", inp.name, "NAME of the surface interaction")->capture_default_str();
+
+  BenchOptions bench;
+  bench.data_dir = MJ_CALIBRATION_DATA_DIR;
+  bool bench_no_plots = false;
+  CLI::App* bench_cmd = app.add_subcommand("bench", "Work-precision study and stability map of the schemes");
+  bench_cmd->add_flag("--quick", bench.quick, "Fewer increment sizes, tolerances and paths (for CI)");
+  bench_cmd->add_option("--out", bench.out_dir, "Folder for CSVs, charts and the stability list")
+      ->capture_default_str();
+  bench_cmd->add_option("--data", bench.data_dir, "The calibration data folder")->capture_default_str();
+  bench_cmd->add_option("--path", bench.paths, "Only this bench path (id); repeatable");
+  bench_cmd->add_option("--budget", bench.budget_seconds, "Wall time allowed per run of one point [s]")
+      ->capture_default_str();
+  bench_cmd->add_flag("--no-plots", bench_no_plots, "Skip the charts");
+  bench_cmd->add_flag("--quiet,-q", bench.quiet, "No progress on stderr");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : kExitBadInput;
+  }
+  try {
+    if (*run_cmd) {
+      run.points_given = run_cmd->count("--points") > 0;
+      run.block_given = run_cmd->count("--block") > 0;
+      run.max_cuts_given = run_cmd->count("--max-cuts") > 0;
+      return run_command(run, std::cerr);
+    }
+    if (*inp_cmd) return inp_command(inp, std::cout);
+    if (*bench_cmd) {
+      bench.plots = !bench_no_plots;
+      return run_bench_command(bench, std::cout, std::cerr);
+    }
+    val.plots = !no_plots;
+    return run_validation(val, std::cout, std::cerr);
+  } catch (const InputError& e) {
+    std::cerr << "masonry-joint: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "masonry-joint: " << e.what() << "\n";
+    return kExitChecksFailed;
+  }
+}

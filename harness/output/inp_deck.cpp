@@ -1,0 +1,46 @@
+#include "output/inp_deck.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <ostream>
+
+#include "mortar/parameters.hpp"
+
+namespace mortar::harness {
+
+std::string exact_decimal(double x) {
+  char buf[40];
+  for (int digits = 6; digits <= 17; ++digits) {
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    if (std::strtod(buf, nullptr) == x) break;
+  }
+  std::string s = buf;
+  // Fortran list-directed input reads "3" and "3." alike; the dot says REAL.
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".";
+  return s;
+}
+
+namespace {
+std::string prop_name(size_t i) {
+  if (i < static_cast<size_t>(kParameterCount)) return kParameterInfo[i].name;
+  static const char* controls[] = {"scheme", "STOL", "FTOL", "max substeps", "min substep"};
+  return i - kParameterCount < 5 ? controls[i - kParameterCount] : "unused";
+}
+}  // namespace
+
+void write_surface_interaction(std::ostream& out, const InpOptions& o) {
+  out << "** Mortar-joint law (coupled damage-plasticity), Abaqus/Explicit general contact.\n"
+      << "** Assign with *CONTACT PROPERTY ASSIGNMENT; run with user=<the VUINTERACTION object>.\n"
+      << "*SURFACE INTERACTION, NAME=" << o.name << ", USER=INTERACTION, PROPERTIES=" << o.props.size()
+      << ", DEPVAR=" << o.depvar << "\n";
+  for (size_t first = 0; first < o.props.size(); first += 8) {
+    const size_t last = std::min(first + 8, o.props.size());
+    out << "** props(" << first + 1 << ".." << last << "):";
+    for (size_t i = first; i < last; ++i) out << ' ' << prop_name(i);
+    out << "\n";
+    for (size_t i = first; i < last; ++i) out << (i == first ? "" : ", ") << exact_decimal(o.props[i]);
+    out << "\n";
+  }
+}
+
+}  // namespace mortar::harness

@@ -1,0 +1,33 @@
+// The input-deck block: header, comments, eight exact props per line.
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <sstream>
+
+#include "output/inp_deck.hpp"
+
+using namespace mortar::harness;
+
+TEST_CASE("The input-deck block: header, comments, eight exact props per line", "[inputs]") {
+  // Arrange
+  InpOptions o;
+  o.props = {209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3, 1, 1e-8};
+  o.depvar = 23;
+  std::ostringstream out;
+  // Act
+  write_surface_interaction(out, o);
+  // Assert
+  const std::string text = out.str();
+  CHECK_THAT(text, Catch::Contains("*SURFACE INTERACTION, NAME=MORTAR, USER=INTERACTION, PROPERTIES=16, DEPVAR=23\n"));
+  CHECK_THAT(text, Catch::Contains("\n209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87\n"));
+  CHECK_THAT(text, Catch::Contains("** props(9..16): m psi0 psir n bn bs scheme STOL\n"
+                                   "1217.7, 27.7, 0., 1828.3, 10., 3., 1., 1e-08\n"));
+}
+
+TEST_CASE("Numbers in the input deck read back exactly", "[inputs]") {
+  for (double x : {0.1, 1.0 / 3.0, 209.9, 1e-300, 6.02214076e23, 0.0}) {
+    const std::string s = exact_decimal(x);
+    CAPTURE(s);
+    CHECK(std::strtod(s.c_str(), nullptr) == x);
+  }
+}
