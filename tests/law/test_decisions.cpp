@@ -1,14 +1,14 @@
 // Decisions of docs/model.md that the invariant tests do not pin on their
-// own: regime switches inside an increment, the closure jump, snap-back,
-// disintegration, the regularised potential, the block function.
+// own: regime switches inside an increment (docs/model.md 6), the closure
+// jump, snap-back, disintegration, the regularised potential (docs/model.md 5).
 #include <catch2/catch.hpp>
 
 #include <random>
-#include <vector>
 
 #include "mortar/surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
+#include "schemes.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -50,8 +50,9 @@ TEST_CASE("Decision: the flow direction is dG/dsigma of the regularised potentia
 }
 
 TEST_CASE("Decision: a regime switch inside an increment is resolved where it happens", "[decision][regime]") {
-  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
-  const Model M = model_with(almeida_m15(), scheme);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m15(), S.scheme);
   // Damaged by pure opening, so that closing with a small slip stays elastic.
   DisplacementDriver drive(M);
   drive.ramp(Vec3(0.004, 0, 0), 400);
@@ -107,22 +108,28 @@ TEST_CASE("Decision: a snap-back drops at fixed separation to a stable point on 
   p.ft0 = 1.0;
   p.c0 = 2.0;
   p.GIC = 0.0005;
-  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
-  const Model M = model_with(p, scheme);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(p, S.scheme);
   DisplacementDriver d(M);
   // 1e-7 mm increments: the drop happens inside one increment, so the
   // trapezoidal external work is accurate to about 1e-4.
   d.ramp(Vec3(0.004, 0, 0), 40000);
   REQUIRE(d.curve().all_ok);
+  // Tallied over the 40000 increments, asserted once.
   bool dropped = false;
+  int non_finite = 0, above_strength = 0, damage_decreased = 0;
   for (size_t i = 1; i < d.curve().samples.size(); ++i) {
     const Sample& a = d.curve().samples[i - 1];
     const Sample& b = d.curve().samples[i];
     if (b.result.status.relaxations > 0) dropped = true;
-    CHECK(b.traction.allFinite());
-    CHECK(b.traction[0] <= p.ft0 * (1 + 1e-9));
-    CHECK(b.state.dn >= a.state.dn);
+    if (!b.traction.allFinite()) ++non_finite;
+    if (!(b.traction[0] <= p.ft0 * (1 + 1e-9))) ++above_strength;
+    if (!(b.state.dn >= a.state.dn)) ++damage_decreased;
   }
+  CHECK(non_finite == 0);
+  CHECK(above_strength == 0);
+  CHECK(damage_decreased == 0);
   CHECK(dropped);
   // The work done is all dissipated or stored.
   const double W = d.curve().external_work();
@@ -154,29 +161,4 @@ TEST_CASE("Decision: an open joint with no strength left disintegrates", "[decis
   REQUIRE(r.status.ok());
   CHECK(shear_norm(r.traction) <= M.tan_phi0 * std::abs(r.traction[0]) * (1 + 1e-6));
   CHECK(shear_norm(r.traction) >= M.tan_phir * std::abs(r.traction[0]) * (1 - 1e-6));
-}
-
-TEST_CASE("Decision: the block function gives the point-by-point results in the solver layout",
-          "[decision][block]") {
-  const Model M = model_with(van_der_pluijm(-0.5), Scheme::modified_euler);
-  const int n = 7, n_dir = 3, n_states = kStateCount;
-  std::vector<double> state(n * n_states, 0.0), traction(n * n_dir), dsep(n * n_dir), energy(n);
-  std::vector<State> points(n);
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> u(-2e-3, 2e-3);
-  for (int step = 0; step < 50; ++step) {
-    for (double& x : dsep) x = u(rng);
-    const int failures = integrate_block(M, n, n_dir, n_states, dsep.data(), state.data(), traction.data(),
-                                         BlockOutputs{energy.data(), nullptr});
-    CHECK(failures == 0);
-    for (int k = 0; k < n; ++k) {
-      const IncrementResult r =
-          integrate_increment(M, points[k], Vec3(dsep[k * 3], dsep[k * 3 + 1], dsep[k * 3 + 2]));
-      for (int i = 0; i < n_dir; ++i) CHECK(traction[k * n_dir + i] == r.traction[i]);
-      CHECK(energy[k] == r.elastic_energy);
-      std::vector<double> flat(n_states);
-      store_state(points[k], flat.data());
-      for (int j = 0; j < n_states; ++j) CHECK(state[k * n_states + j] == flat[j]);
-    }
-  }
 }
