@@ -39,6 +39,7 @@ if [ "${MJ_TEST_QUICK:-0}" != 1 ]; then
   stage "fuzz vuinteraction_ for 60 s" fuzz.log bash tools/fuzz.sh 60
 fi
 printf 'test.sh: %s\n' "${summary[@]}"
+echo "test.sh: all stages: $SECONDS s"
 echo "test.sh: ${#summary[@]} passed, 0 failed"
 # Last, the runner's closing summary of the full suite (the normal build's
 # ctest line, which CI reads).
