@@ -79,7 +79,9 @@ TEST_CASE("Decision: a regime switch inside an increment is resolved where it ha
 
 TEST_CASE("Decision: the closure jump returns to the surface at fixed separation, without overshoot",
           "[decision][regime]") {
-  const Model M = model_with(almeida_m15(), Scheme::modified_euler);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m15(), S.scheme);
   State s = damaged_open_joint(M);
   const Vec3 e = s.elastic_separation();
   // The trial at closure: the shear stiffness jumps from ks(1 - ds) to ks.
@@ -139,7 +141,9 @@ TEST_CASE("Decision: a snap-back drops at fixed separation to a stable point on 
 }
 
 TEST_CASE("Decision: an open joint with no strength left disintegrates", "[decision][disintegration]") {
-  const Model M = model_with(almeida_m34(), Scheme::modified_euler);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m34(), S.scheme);
   State s;
   s.wI = 2 * M.p.GIC;  // s = 0
   s.separation = Vec3(1e-3, 0, 0);

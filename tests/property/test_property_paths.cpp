@@ -137,15 +137,15 @@ void print(const char* what, const Tally& t) {
 // parameter sets of 16 paths: a rejected increment is reported and keeps its
 // start state (with `rejections_allowed` false, none is rejected at all);
 // everything finite; damage in [0, 1] and never decreasing; on or inside the
-// surface.
-void check_properties(const Tally& t, int sets, bool rejections_allowed) {
+// surface (for the schemes with a drift correction, which run_set checks).
+void check_properties(const Tally& t, int sets, bool rejections_allowed, mortar::Scheme scheme) {
   CHECK(t.paths == 16 * sets);
   CHECK(t.rejected_changed == 0);
   if (!rejections_allowed) CHECK(t.rejected == 0);
   CHECK(t.non_finite == 0);
   CHECK(t.damage_out_of_range == 0);
   CHECK(t.damage_decreased == 0);
-  CHECK(t.off_surface == 0);
+  if (scheme != mortar::Scheme::forward_euler) CHECK(t.off_surface == 0);
 }
 
 // 100 random valid sets per explicit scheme and 50 for the implicit one (its
@@ -169,7 +169,7 @@ void check_random_paths(mortar::Scheme scheme) {
   // defect: 2 of the 96 000 modified-Euler point-increments are rejected
   // ("too many substeps", an open joint at d ~ 1 and s ~ 0); reproducers in
   // the hidden test "[known-defect]" below and docs/robustness.md.
-  check_properties(t, sets, true);
+  check_properties(t, sets, true, scheme);
 }
 
 }  // namespace
@@ -208,7 +208,7 @@ TEST_CASE("Property: energy closure, external work = sed + SDV 16 + 17 + 18 (160
     run_set(p, mortar::Scheme::modified_euler, set % 4 == 3 ? 2 : 3, 16, 150, true, rng, t);
   }
   print("closure, modest increments", t);
-  check_properties(t, sets, false);
+  check_properties(t, sets, false, mortar::Scheme::modified_euler);
   CHECK(quantile(t.vs_bound, 1.0) <= 1.0);
 }
 
