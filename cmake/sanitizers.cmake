@@ -1,4 +1,4 @@
-# Sanitizer and fuzzing builds (issue 6). Included by the top-level
+# Sanitizer and fuzzing builds (docs/robustness.md). Included by the top-level
 # CMakeLists.txt before any target is defined, so the flags reach every
 # target: the law, the adapters, the harness and all tests.
 #

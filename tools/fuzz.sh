@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the VUINTERACTION entry point vuinteraction_ with libFuzzer (Clang),
 # built with AddressSanitizer + UndefinedBehaviorSanitizer, starting from the
-# committed seed corpus tests/fuzz/corpus (issue 6; docs/robustness.md).
+# committed seed corpus tests/fuzz/corpus (docs/robustness.md).
 #
 #   bash tools/fuzz.sh                 60 s on the double-precision routine (CI)
 #   bash tools/fuzz.sh 3600            one hour

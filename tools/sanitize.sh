@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The test suite under sanitizers (issue 6; docs/robustness.md).
+# The test suite under sanitizers (docs/robustness.md).
 #
 #   bash tools/sanitize.sh address   AddressSanitizer + UndefinedBehaviorSanitizer:
 #                                    every test (build-asan/)

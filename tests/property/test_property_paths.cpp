@@ -1,4 +1,4 @@
-// Issue 6, part 3: properties of vuinteraction_ (double precision, standalone
+// Properties of vuinteraction_ (double precision, standalone
 // build) over randomised valid parameter sets and loading paths, fixed seeds:
 //   - every state variable and every output finite, no point rejected;
 //   - damage within [0, 1] and never decreasing;
