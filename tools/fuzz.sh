@@ -48,4 +48,9 @@ if [ "$status" -ne 0 ]; then
   tail -n 60 "$log"
   exit 1
 fi
-echo "fuzz: passed, $(grep -Eo '^stat::number_of_executed_units: [0-9]+' "$log" | awk '{s+=$2} END {print s+0}') executions in $seconds s"
+executions=$(grep -Eo '^stat::number_of_executed_units: [0-9]+' "$log" | awk '{s+=$2} END {print s+0}')
+if [ "$executions" -eq 0 ]; then  # a run that executed nothing has checked nothing
+  echo "fuzz: FAILED: no input was executed; full log: $log"
+  exit 1
+fi
+echo "fuzz: passed, $executions executions in $seconds s"
