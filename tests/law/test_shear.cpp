@@ -101,3 +101,27 @@ TEST_CASE("Invariant 6: shearing in any direction of the joint plane gives the s
     CHECK(worst < 1e-9);
   }
 }
+
+TEST_CASE("Paths: a step at prescribed normal traction reaches it and keeps the imposed slip", "[paths]") {
+  // The mixed control every shear test above relies on (tests/support/paths.hpp).
+  const Parameters p = van_der_pluijm(-0.5);
+  const Model M = model_with(p, Scheme::modified_euler);
+  State s;
+  IncrementResult r;
+  // Elastic: the normal separation is sigma_n / kn, whatever the slip.
+  REQUIRE(step_at_normal_traction(M, s, -0.5, 1e-4, -2e-4, r));
+  CHECK(std::abs(r.traction[0] + 0.5) <= 1e-12);
+  CHECK(s.separation[0] == Approx(-0.5 / p.kn).epsilon(1e-10));
+  CHECK(s.separation[1] == 1e-4);
+  CHECK(s.separation[2] == -2e-4);
+  // Plastic, with dilatancy: still on the target, the slip still imposed.
+  const Vec3 before = s.separation;
+  REQUIRE(step_at_normal_traction(M, s, -0.5, 0.02, 0, r));
+  CHECK(r.status.plastic);
+  CHECK(std::abs(r.traction[0] + 0.5) <= 1e-12);
+  CHECK(s.separation[1] == before[1] + 0.02);
+  // A tension beyond the strength cannot be reached: false, state unchanged.
+  const State kept = s;
+  CHECK_FALSE(step_at_normal_traction(M, s, 10 * p.ft0, 0, 0, r));
+  CHECK(s.separation == kept.separation);
+}
