@@ -27,10 +27,8 @@ if(MJ_SANITIZE)
   # before the build type's flags, so that a build type with full debug
   # information (-g, later on the command line) keeps it; -g1 is what
   # tools/sanitize.sh asks for (full debug information costs compile time).
+  # The Fortran test callers take theirs from the build type's flags.
   string(PREPEND CMAKE_CXX_FLAGS "-g1 ")
-  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
-    string(PREPEND CMAKE_Fortran_FLAGS "-g1 ")
-  endif()
   if(MJ_SANITIZE MATCHES "undefined")
     # A UBSan report must fail the test, not scroll past. GCC leaves
     # float-cast-overflow (a double that does not fit the int it is converted
