@@ -1,4 +1,4 @@
-# Sanitizer and fuzzing builds (issue 6). Included by the top-level
+# Sanitizer and fuzzing builds (docs/robustness.md). Included by the top-level
 # CMakeLists.txt before any target is defined, so the flags reach every
 # target: the law, the adapters, the harness and all tests.
 #
@@ -22,7 +22,13 @@ if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
 endif()
 
 if(MJ_SANITIZE)
-  set(mj_san_flags -fsanitize=${MJ_SANITIZE} -fno-omit-frame-pointer -g)
+  set(mj_san_flags -fsanitize=${MJ_SANITIZE} -fno-omit-frame-pointer)
+  # Line tables at least, so that every report names file and line. Put
+  # before the build type's flags, so that a build type with full debug
+  # information (-g, later on the command line) keeps it; -g1 is what
+  # tools/sanitize.sh asks for (full debug information costs compile time).
+  # The Fortran test callers take theirs from the build type's flags.
+  string(PREPEND CMAKE_CXX_FLAGS "-g1 ")
   if(MJ_SANITIZE MATCHES "undefined")
     # A UBSan report must fail the test, not scroll past. GCC leaves
     # float-cast-overflow (a double that does not fit the int it is converted

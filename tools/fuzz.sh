@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the VUINTERACTION entry point vuinteraction_ with libFuzzer (Clang),
 # built with AddressSanitizer + UndefinedBehaviorSanitizer, starting from the
-# committed seed corpus tests/fuzz/corpus (issue 6; docs/robustness.md).
+# committed seed corpus tests/fuzz/corpus (docs/robustness.md). First it
+# replays that corpus, every input once, in both precisions.
 #
 #   bash tools/fuzz.sh                 60 s on the double-precision routine (CI)
 #   bash tools/fuzz.sh 3600            one hour
@@ -22,20 +23,37 @@ build=build-fuzz
 bash tools/install-deps.sh clang libclang-rt-14-dev
 jobs=$(nproc 2>/dev/null || echo 2)
 
-# -O1 -g and no NDEBUG: assertions (Eigen's included) stay on.
+# -O1 -g1 (line tables for the reports) and no NDEBUG: assertions (Eigen's included) stay on.
 mkdir -p "$build"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
   -DCMAKE_CXX_COMPILER=clang++ -DMJ_FUZZ=ON -DMJ_SANITIZE=address,undefined > "$build/configure.log" 2>&1 \
   || { cat "$build/configure.log"; exit 1; }
-cmake --build "$build" -j"$jobs" --target "fuzz_vuinteraction_$precision"
+cmake --build "$build" -j"$jobs" --target fuzz_vuinteraction_double fuzz_vuinteraction_single
+
+mkdir -p "$build/artifacts"
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+common=(-max_len=4096 -timeout=60 -rss_limit_mb=4096 -artifact_prefix="$build/artifacts/")
+
+# The committed seed corpus, every input once, in both precisions: the
+# sanitized replay of the corpus (the sanitizer builds do not build their own).
+corpus=(tests/fuzz/corpus/*)
+for p in double single; do
+  replay_log="$build/replay-$p.log"
+  "$build/tests/fuzz/fuzz_vuinteraction_$p" "${common[@]}" "${corpus[@]}" > "$replay_log" 2>&1 \
+    || { echo "fuzz: seed corpus replay FAILED ($p); full log: $replay_log"; tail -n 60 "$replay_log"; exit 1; }
+  executed=$(grep -c "^Executed " "$replay_log" || true)
+  if [ "$executed" -ne "${#corpus[@]}" ]; then
+    echo "fuzz: seed corpus replay ($p) executed $executed of ${#corpus[@]} inputs; full log: $replay_log"
+    exit 1
+  fi
+  echo "fuzz: seed corpus replay ($p): ${#corpus[@]} inputs, every property holds"
+done
 
 target="$build/tests/fuzz/fuzz_vuinteraction_$precision"
 work="$build/corpus-$precision"
-mkdir -p "$work" "$build/artifacts"
-export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=1}
-export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
-flags=(-max_total_time="$seconds" -max_len=4096 -timeout=60 -rss_limit_mb=4096 -print_final_stats=1
-       -artifact_prefix="$build/artifacts/")
+mkdir -p "$work"
+flags=(-max_total_time="$seconds" -print_final_stats=1 "${common[@]}")
 log="$build/fuzz-$precision.log"
 echo "fuzz: $target for $seconds s, corpus $work + tests/fuzz/corpus; log $log"
 "$target" "${flags[@]}" "$work" tests/fuzz/corpus > "$log" 2>&1 || status=$?
@@ -48,4 +66,9 @@ if [ "$status" -ne 0 ]; then
   tail -n 60 "$log"
   exit 1
 fi
-echo "fuzz: passed, $(grep -Eo '^stat::number_of_executed_units: [0-9]+' "$log" | awk '{s+=$2} END {print s+0}') executions in $seconds s"
+executions=$(grep -Eo '^stat::number_of_executed_units: [0-9]+' "$log" | awk '{s+=$2} END {print s+0}')
+if [ "$executions" -eq 0 ]; then  # a run that executed nothing has checked nothing
+  echo "fuzz: FAILED: no input was executed; full log: $log"
+  exit 1
+fi
+echo "fuzz: passed, $executions executions in $seconds s"

@@ -1,4 +1,4 @@
-// The byte format of one fuzz input for vuinteraction_ (issue 6): how raw
+// The byte format of one fuzz input for vuinteraction_ (docs/robustness.md): how raw
 // bytes become the arguments of a sequence of calls on one block. Read by the
 // fuzz target (fuzz_vuinteraction.cpp) and written by the seed generator
 // (make_seeds.cpp), so both sides live here.

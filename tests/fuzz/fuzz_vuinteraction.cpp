@@ -1,4 +1,4 @@
-// Fuzz target of the VUINTERACTION entry point vuinteraction_ (issue 6, part 1).
+// Fuzz target of the VUINTERACTION entry point vuinteraction_ (docs/robustness.md).
 //
 // One input (format: fuzz_input.hpp) is a block of points with arbitrary
 // dimensions (nDir, nStates, nNodState, nBlock, nProps, valid and not),

@@ -43,7 +43,7 @@ TEST_CASE("Damage: settle() puts the secant through the traction and books the r
   CHECK(y.dissipation_damage == Approx(expected).epsilon(1e-14));
 }
 
-TEST_CASE("Damage: settle() never lowers the damage; the traction follows the kept secant", "[damage]") {
+TEST_CASE("Damage: settle() never lowers the damage and the traction follows the kept secant", "[damage]") {
   const Model M = make_model_checked(almeida_m15());
   const Vec3 e(2e-3, 3e-3, 0);
   State y = open_joint(e, 0.3, 0.3);

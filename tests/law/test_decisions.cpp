@@ -1,11 +1,14 @@
 // Decisions of docs/model.md that the invariant tests do not pin on their
-// own: regime switches inside an increment, the closure jump, snap-back,
-// disintegration, the regularised potential.
+// own: regime switches inside an increment (docs/model.md 6), the closure
+// jump, snap-back, disintegration, the regularised potential (docs/model.md 5).
 #include <catch2/catch.hpp>
+
+#include <random>
 
 #include "mortar/surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
+#include "schemes.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -47,8 +50,9 @@ TEST_CASE("Decision: the flow direction is dG/dsigma of the regularised potentia
 }
 
 TEST_CASE("Decision: a regime switch inside an increment is resolved where it happens", "[decision][regime]") {
-  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
-  const Model M = model_with(almeida_m15(), scheme);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m15(), S.scheme);
   // Damaged by pure opening, so that closing with a small slip stays elastic.
   DisplacementDriver drive(M);
   drive.ramp(Vec3(0.004, 0, 0), 400);
@@ -75,7 +79,9 @@ TEST_CASE("Decision: a regime switch inside an increment is resolved where it ha
 
 TEST_CASE("Decision: the closure jump returns to the surface at fixed separation, without overshoot",
           "[decision][regime]") {
-  const Model M = model_with(almeida_m15(), Scheme::modified_euler);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m15(), S.scheme);
   State s = damaged_open_joint(M);
   const Vec3 e = s.elastic_separation();
   // The trial at closure: the shear stiffness jumps from ks(1 - ds) to ks.
@@ -104,22 +110,28 @@ TEST_CASE("Decision: a snap-back drops at fixed separation to a stable point on 
   p.ft0 = 1.0;
   p.c0 = 2.0;
   p.GIC = 0.0005;
-  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
-  const Model M = model_with(p, scheme);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(p, S.scheme);
   DisplacementDriver d(M);
   // 1e-7 mm increments: the drop happens inside one increment, so the
   // trapezoidal external work is accurate to about 1e-4.
   d.ramp(Vec3(0.004, 0, 0), 40000);
   REQUIRE(d.curve().all_ok);
+  // Tallied over the 40000 increments, asserted once.
   bool dropped = false;
+  int non_finite = 0, above_strength = 0, damage_decreased = 0;
   for (size_t i = 1; i < d.curve().samples.size(); ++i) {
     const Sample& a = d.curve().samples[i - 1];
     const Sample& b = d.curve().samples[i];
     if (b.result.status.relaxations > 0) dropped = true;
-    CHECK(b.traction.allFinite());
-    CHECK(b.traction[0] <= p.ft0 * (1 + 1e-9));
-    CHECK(b.state.dn >= a.state.dn);
+    if (!b.traction.allFinite()) ++non_finite;
+    if (!(b.traction[0] <= p.ft0 * (1 + 1e-9))) ++above_strength;
+    if (!(b.state.dn >= a.state.dn)) ++damage_decreased;
   }
+  CHECK(non_finite == 0);
+  CHECK(above_strength == 0);
+  CHECK(damage_decreased == 0);
   CHECK(dropped);
   // The work done is all dissipated or stored.
   const double W = d.curve().external_work();
@@ -129,7 +141,9 @@ TEST_CASE("Decision: a snap-back drops at fixed separation to a stable point on 
 }
 
 TEST_CASE("Decision: an open joint with no strength left disintegrates", "[decision][disintegration]") {
-  const Model M = model_with(almeida_m34(), Scheme::modified_euler);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  CAPTURE(S.name);
+  const Model M = model_with(almeida_m34(), S.scheme);
   State s;
   s.wI = 2 * M.p.GIC;  // s = 0
   s.separation = Vec3(1e-3, 0, 0);

@@ -1,4 +1,4 @@
-// MODEL.md section 2: parameters, their order, validation rules and the
+// docs/model.md 2: parameters, their order, validation rules and the
 // values derived from them once.
 #include <catch2/catch.hpp>
 
@@ -27,7 +27,7 @@ TEST_CASE("Parameters: props follow Table 1 order and names", "[parameters]") {
   CHECK(c.scheme == Scheme::modified_euler);
 }
 
-TEST_CASE("Parameters: each rule of section 2 is enforced with name, value and rule", "[parameters]") {
+TEST_CASE("Parameters: each rule of docs/model.md 2 is enforced with name, value and rule", "[parameters]") {
   struct Case {
     int index;
     double value;
@@ -116,4 +116,20 @@ TEST_CASE("Parameters: to_props writes props 1-19 that read_props reads back", "
   CHECK(d.ftol == c.ftol);
   CHECK(d.max_substeps == c.max_substeps);
   CHECK(d.min_substep == c.min_substep);
+}
+
+TEST_CASE("Parameters: scheme 3 (backward Euler) is read from props(15) and named", "[parameters][implicit]") {
+  Controls implicit;
+  implicit.scheme = Scheme::implicit;
+  auto props = to_props(almeida_m15(), implicit);
+  REQUIRE(props[14] == 3);
+  Parameters q;
+  Controls c;
+  REQUIRE(read_props(props.data(), 15, q, c).ok());
+  CHECK(c.scheme == Scheme::implicit);
+  CHECK(std::string(scheme_name(Scheme::implicit)) == "backward-euler");
+  props[14] = 4;
+  const ValidationError e = read_props(props.data(), 15, q, c);
+  CHECK_FALSE(e.ok());
+  CHECK(e.index == 14);
 }

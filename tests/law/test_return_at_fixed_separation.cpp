@@ -48,7 +48,7 @@ TEST_CASE("Return at fixed separation: ends on the surface, separation fixed, wo
   }
 }
 
-TEST_CASE("Drift correction: a point just outside returns within FTOL; one inside is left alone", "[relaxation]") {
+TEST_CASE("Drift correction: a point just outside returns within FTOL and one inside is left alone", "[relaxation]") {
   const Model M = make_model_checked(atkinson());
   Point P = slipped(M, 0);
   const Surface S = surface_of(M, P.y);

@@ -1,14 +1,23 @@
-// MODEL.md section 8, invariant 10: no NaN, infinity, crash or hang for any
-// finite input — randomised valid parameter sets and load paths (fixed seeds):
-// opening-closing, shear reversals, jumps across the apex, fully softened joints.
+// docs/model.md 10, invariant 10: no NaN, infinity, crash or hang for any
+// finite input, in every scheme — randomised valid parameter sets and load
+// paths (fixed seeds): opening-closing, shear reversals, jumps across the
+// apex, anything from tiny to huge, from a virgin and a fully softened joint.
+//
+// Every increment is tallied and the tallies are asserted once at the end
+// (as tests/property does): about a million checks would otherwise be
+// Catch2 assertions, which dominate the run time under the sanitizers.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <random>
 
 #include "mortar/surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "random_parameters.hpp"
+#include "schemes.hpp"
+#include "test_scale.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -16,11 +25,6 @@ using namespace mortar::testing;
 namespace {
 using mj_test::log_uniform;
 using mj_test::uniform;
-Parameters random_parameters(std::mt19937& rng) {
-  const Parameters p = mj_test::random_parameters(rng);
-  REQUIRE(validate(p).ok());
-  return p;
-}
 
 // A random increment of one of the path families, scaled to the joint.
 Vec3 random_increment(std::mt19937& rng, const Parameters& p, int family) {
@@ -40,50 +44,104 @@ Vec3 random_increment(std::mt19937& rng, const Parameters& p, int family) {
 }
 
 struct Tally {
-  int increments = 0, failures = 0, off_surface = 0;
+  long increments = 0, plastic = 0, newton = 0, rejected = 0;
+  int max_newton = 0, approximate = 0;
+  // Each of these must stay zero.
+  int invalid_parameters = 0, not_softened = 0, non_finite = 0, invalid_state = 0, damage_decreased = 0,
+      failure_not_exhausted = 0, failure_changed_state = 0, off_surface = 0;
+  int failures = 0, failures_by_family[4] = {0, 0, 0, 0};
 };
 
-void run_path(const Model& M, std::mt19937& rng, int family, State start, Tally& t) {
+// Counts one offence and describes the first few.
+void offence(int& count, const char* what, int set, int family, int k) {
+  if (++count <= 3) std::printf("[invariant 10] %s: set %d, family %d, increment %d\n", what, set, family, k);
+}
+
+void run_path(const SchemeUnderTest& S, const Model& M, std::mt19937& rng, int set, int family, State start,
+              Tally& t) {
   State s = start;
   for (int k = 0; k < 60; ++k) {
     const State before = s;
-    const IncrementResult r = integrate_increment(M, s, random_increment(rng, M.p, family));
+    Mat3 T;
+    const IncrementResult r = integrate_increment(M, s, random_increment(rng, M.p, family), &T);
     ++t.increments;
+    if (r.status.plastic) ++t.plastic;
+    t.newton += r.status.newton_iterations;
+    t.max_newton = std::max(t.max_newton, r.status.newton_iterations);
+    t.rejected += r.status.substeps_rejected;
+    if (r.status.tangent_approximate) ++t.approximate;
     if (!r.status.ok()) {
       ++t.failures;
-      UNSCOPED_INFO("failure: " << failure_name(r.status.failure));
+      ++t.failures_by_family[family];
+      // A failure is the local solve's, reported, and keeps the start state
+      // (the solver cuts back).
+      const bool exhausted = r.status.failure == Failure::local_solve_failed ||
+                             r.status.failure == Failure::too_many_substeps;
+      if (!exhausted) offence(t.failure_not_exhausted, failure_name(r.status.failure), set, family, k);
+      if (!(s.plastic == before.plastic && s.separation == before.separation))
+        offence(t.failure_changed_state, "a failure changed the state", set, family, k);
     }
-    REQUIRE(r.traction.allFinite());
-    REQUIRE(std::isfinite(r.elastic_energy));
-    REQUIRE(check_state(s) == nullptr);
-    CHECK(s.dn >= before.dn);
-    CHECK(s.ds >= before.ds);
-    CHECK(s.wI >= before.wI);
-    if (M.controls.scheme == Scheme::modified_euler) {
-      const double F = yield_function(r.traction, surface_of(M, s));
+    if (!(r.traction.allFinite() && T.allFinite() && std::isfinite(r.elastic_energy)))
+      offence(t.non_finite, "non-finite traction, tangent or energy", set, family, k);
+    if (const char* rule = check_state(s)) offence(t.invalid_state, rule, set, family, k);
+    if (!(s.dn >= before.dn && s.ds >= before.ds && s.wI >= before.wI))
+      offence(t.damage_decreased, "damage or work decreased", set, family, k);
+    if (S.ends_on_surface && r.status.ok()) {
       // On or inside the surface: FTOL, with the slack the drift correction leaves.
-      if (F > 10 * yield_tolerance(M, r.traction)) ++t.off_surface;
+      const double F = yield_function(r.traction, surface_of(M, s));
+      if (F > 10 * yield_tolerance(M, r.traction)) offence(t.off_surface, "off the surface", set, family, k);
     }
   }
 }
 }  // namespace
 
 TEST_CASE("Invariant 10: random parameters and paths never give NaN, failure or hang", "[invariant10]") {
-  const Scheme scheme = GENERATE(Scheme::modified_euler, Scheme::forward_euler);
-  std::mt19937 rng(20261122);
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  // Under the sanitizers the first tenth of the sets (tests/support/test_scale.hpp).
+  const int sets = mj_test::scaled(S.random_sets);
+  std::mt19937 rng(S.random_seed);
   Tally t;
-  for (int set = 0; set < 200; ++set) {
-    const Parameters p = random_parameters(rng);
-    const Model M = model_with(p, scheme);
-    CAPTURE(set, p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs);
-    for (int family = 0; family < 4; ++family) run_path(M, rng, family, State{}, t);
+  for (int set = 0; set < sets; ++set) {
+    const Parameters p = mj_test::random_parameters(rng);
+    if (!validate(p).ok()) offence(t.invalid_parameters, "invalid parameter set", set, -1, -1);
+    const Model M = model_with(p, S.scheme);
+    for (int family = 0; family < 4; ++family) run_path(S, M, rng, set, family, State{}, t);
     // Fully softened joint: opened far beyond separation, then everything again.
     State softened;
-    integrate_increment(M, softened, Vec3(2 * p.ft0 / p.kn + 200 * p.GIC / p.ft0, 0, 0));
-    REQUIRE(softened.dn == Approx(1.0).margin(1e-6));
-    for (int family = 0; family < 4; ++family) run_path(M, rng, family, softened, t);
+    const Vec3 opening(2 * p.ft0 / p.kn + 200 * p.GIC / p.ft0, 0, 0);
+    for (int i = 0; i < S.softening_increments; ++i) integrate_increment(M, softened, opening / S.softening_increments);
+    if (!(std::abs(softened.dn - 1.0) <= 1e-6)) offence(t.not_softened, "not fully softened", set, -1, -1);
+    for (int family = 0; family < 4; ++family) run_path(S, M, rng, set, family, softened, t);
   }
-  CAPTURE(scheme_name(scheme), t.increments, t.failures, t.off_surface);
-  CHECK(t.failures == 0);
-  CHECK(t.off_surface == 0);
+  std::printf("[invariant 10] %s: %ld increments, %ld plastic, %d failures (by family %d %d %d %d), %d off the "
+              "surface, %d approximate tangents, %.1f Newton iterations per plastic increment (max %d), %ld halvings\n",
+              S.name, t.increments, t.plastic, t.failures, t.failures_by_family[0], t.failures_by_family[1],
+              t.failures_by_family[2], t.failures_by_family[3], t.off_surface, t.approximate,
+              double(t.newton) / std::max(t.plastic, 1L), t.max_newton, t.rejected);
+  CAPTURE(S.name, t.increments, t.failures);
+  CHECK(t.increments == 8L * 60 * sets);
+  CHECK(t.invalid_parameters == 0);
+  CHECK(t.not_softened == 0);
+  CHECK(t.non_finite == 0);
+  CHECK(t.invalid_state == 0);
+  CHECK(t.damage_decreased == 0);
+  CHECK(t.failure_not_exhausted == 0);
+  CHECK(t.failure_changed_state == 0);
+  if (S.ends_on_surface) CHECK(t.off_surface == 0);
+  if (S.extreme_paths_may_fail) {
+    // Stated tolerance (docs/model.md 7.5): no failure on the moderate
+    // families (opening-closing, shear reversals: increments up to a few
+    // elastic limits); on the extreme ones (jumps of 10-40 elastic limits
+    // across the apex, and increments from 1e-12 to 10 mm, up to 1e5 elastic
+    // limits) the local solve may fail at the smallest substep for a few in
+    // 1e4 increments, reported as Failure::local_solve_failed or
+    // too_many_substeps.
+    // The rate is a statement about the whole population: the first tenth
+    // of the sets (the sanitizer builds) holds 11 of its 37 failures.
+    CHECK(t.failures_by_family[0] == 0);
+    CHECK(t.failures_by_family[1] == 0);
+    if (sets == S.random_sets) CHECK(t.failures <= t.increments / 1000);
+  } else {
+    CHECK(t.failures == 0);
+  }
 }

@@ -3,8 +3,6 @@
 // calls it, plus random valid parameter sets and loading paths (fixed seeds).
 #pragma once
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,11 +15,16 @@
 #include "mortar/integrator.hpp"
 #include "mortar/surface.hpp"
 #include "random_parameters.hpp"
+#include "stderr_capture.hpp"
+#include "test_scale.hpp"
 #include "vuinteraction.h"
 
 static_assert(sizeof(mj_real) == sizeof(double), "the property tests call the double-precision routine");
 
 namespace mj_property {
+
+using mj_test::property_scale;
+using mj_test::scaled;
 
 namespace slot = mortar::slot;
 constexpr int kStates = mortar::kStateCount;
@@ -68,47 +71,9 @@ struct Block {
   }
 };
 
-// Captures what is written to file descriptor 2 while it lives.
-class StderrCapture {
- public:
-  StderrCapture() : file_(std::tmpfile()), saved_(dup(2)) {
-    std::fflush(stderr);
-    dup2(fileno(file_), 2);
-  }
-  ~StderrCapture() {
-    std::fflush(stderr);
-    dup2(saved_, 2);
-    close(saved_);
-    std::fclose(file_);
-  }
-  StderrCapture(const StderrCapture&) = delete;
-  StderrCapture& operator=(const StderrCapture&) = delete;
-  std::string text() {
-    std::fflush(stderr);
-    std::string out;
-    std::rewind(file_);
-    for (int c; (c = std::fgetc(file_)) != EOF;) out += char(c);
-    return out;
-  }
+// The adapters' reports are checked by their text (tests/support).
+using mj_test::StderrCapture;
 
- private:
-  std::FILE* file_;
-  int saved_;
-};
-
-// The number of parameter sets a test runs: n, times MJ_PROPERTY_SCALE when
-// that is set to a number in (0, 1] (tools/sanitize.sh runs the property
-// tests under the sanitizers at a quarter of their size; every path is
-// still checked the same way).
-inline double property_scale() {
-  static const double scale = [] {
-    const char* v = std::getenv("MJ_PROPERTY_SCALE");
-    const double x = v ? std::atof(v) : 1.0;
-    return (x > 0 && x <= 1) ? x : 1.0;
-  }();
-  return scale;
-}
-inline int scaled(int n) { return std::max(1, int(std::lround(n * property_scale()))); }
 // The implicit scheme's sets: n, or a single one when the tests are scaled
 // down (the sanitizer builds), where its extreme increments, which spend up
 // to its Newton budget (2e5 iterations), cost minutes: 3 sets took 330 s

@@ -1,4 +1,4 @@
-// Issue 6, part 3: results identical for any grouping of points into blocks.
+// Results identical for any grouping of points into blocks (docs/robustness.md).
 //
 // Abaqus/Explicit hands the routine blocks of points whose size, order and
 // membership change from call to call (and between threads). Every point here

@@ -1,4 +1,4 @@
-// Issue 6, part 4: restart and corruption, through vuinteraction_ (double).
+// Restart and corruption, through vuinteraction_ (double; docs/robustness.md).
 //   - a state array saved mid-path and restored (binary, or as text with 17
 //     significant digits; into a block of another size and order, as after a
 //     restart) continues exactly as the uninterrupted run;

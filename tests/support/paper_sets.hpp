@@ -1,4 +1,5 @@
-// Parameter sets of the paper's Table 1 (MODEL.md section 9), for tests.
+// Parameter sets of the paper's Table 1 (docs/model.md 2), and the model of a
+// set under a scheme, for tests.
 #pragma once
 
 #include "mortar/parameters.hpp"
@@ -20,6 +21,15 @@ inline Parameters almeida_m15() {
 }
 inline Parameters almeida_m34() {
   return {750.5, 312.7, 0.91, 1.37, 0.00293, 0.02925, 40, 32, 2944.5, 8, 0, 4923.8, 10, 3};
+}
+
+// The model of set p integrated by `scheme` at STOL `stol` (docs/model.md 7.4),
+// every other control at its default.
+inline Model model_with(const Parameters& p, Scheme scheme, double stol = 1e-5) {
+  Controls c;
+  c.scheme = scheme;
+  c.stol = stol;
+  return make_model_checked(p, c);
 }
 
 }  // namespace mortar::testing

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
-#include "point_driver.hpp"
+#include "paper_sets.hpp"
 
 namespace mortar::testing {
 
@@ -73,36 +73,70 @@ class DisplacementDriver {
   Curve curve_;
 };
 
+// One increment at a prescribed normal traction: the shear increments are
+// imposed and the normal separation increment is solved for, as a solver
+// would (Newton with forward-difference slopes and a halving line search,
+// each trial from a copy of the start state), then committed to `s`. False,
+// with `s` unchanged, when the traction is not reached within 1e-12 MPa in
+// 50 iterations.
+inline bool step_at_normal_traction(const Model& M, State& s, double sigma_n, double d_slip1, double d_slip2,
+                                    IncrementResult& result) {
+  constexpr double kTolerance = 1e-12;
+  Vec3 d(0, d_slip1, d_slip2);
+  auto trial = [&](const Vec3& dd, State& end) {
+    end = s;
+    return integrate_increment(M, end, dd);
+  };
+  State end;
+  IncrementResult r = trial(d, end);
+  double res = r.traction[0] - sigma_n;
+  for (int it = 0; it < 50 && !(std::abs(res) <= kTolerance); ++it) {
+    const double h = 1e-7 * (std::abs(d[0]) + 1e-4);
+    Vec3 dh = d;
+    dh[0] += h;
+    State probe;
+    const double slope = (trial(dh, probe).traction[0] - sigma_n - res) / h;
+    const double dx = -res / slope;
+    if (!std::isfinite(dx)) return false;
+    double lambda = 1;
+    for (int ls = 0; ls < 30; ++ls) {
+      Vec3 dn = d;
+      dn[0] += lambda * dx;
+      State sn;
+      const IncrementResult rn = trial(dn, sn);
+      const double resn = rn.traction[0] - sigma_n;
+      if (std::abs(resn) < std::abs(res) || ls == 29) {
+        d = dn;
+        r = rn;
+        end = sn;
+        res = resn;
+        break;
+      }
+      lambda *= 0.5;
+    }
+  }
+  if (!(std::abs(res) <= kTolerance)) return false;
+  s = end;
+  result = r;
+  return true;
+}
+
 // Shear at constant normal traction sigma_n (mixed control), as in the van
 // der Pluijm tests: first the normal traction is applied, then the slip.
 inline Curve shear_at_constant_normal(const Model& M, double sigma_n, double slip, int increments,
                                       double direction_angle = 0.0) {
-  harness::PointStepper step = harness::law_stepper(M);
   State s;
   Curve c;
   c.samples.push_back(sample_of(M, s, IncrementResult{}));
-  harness::MixedIncrement pre;
-  pre.c[0] = {true, sigma_n};
-  harness::MixedResult r0 = harness::solve_mixed(step, s, pre, {1e-12, 50, 0});
-  c.samples.push_back(Sample{s.separation, r0.result.traction, s, r0.result});
+  auto step = [&](double d1, double d2) {
+    IncrementResult r;
+    if (!step_at_normal_traction(M, s, sigma_n, d1, d2, r) || !r.status.ok()) c.all_ok = false;
+    c.samples.push_back(Sample{s.separation, r.traction, s, r});
+  };
+  step(0, 0);
   const double ds = slip / increments;
-  for (int i = 0; i < increments; ++i) {
-    harness::MixedIncrement inc;
-    inc.c[0] = {true, sigma_n};
-    inc.c[1] = {false, ds * std::cos(direction_angle)};
-    inc.c[2] = {false, ds * std::sin(direction_angle)};
-    harness::MixedResult r = harness::solve_mixed(step, s, inc, {1e-12, 50, 0});
-    if (!r.result.status.ok()) c.all_ok = false;
-    c.samples.push_back(Sample{s.separation, r.result.traction, s, r.result});
-  }
+  for (int i = 0; i < increments; ++i) step(ds * std::cos(direction_angle), ds * std::sin(direction_angle));
   return c;
-}
-
-inline Model model_with(const Parameters& p, Scheme scheme, double stol = 1e-5) {
-  Controls c;
-  c.scheme = scheme;
-  c.stol = stol;
-  return make_model_checked(p, c);
 }
 
 }  // namespace mortar::testing

@@ -1,5 +1,5 @@
-// Random valid parameter sets for the randomised tests (MODEL.md invariant
-// 10, the property tests): over and beyond the ranges of Table 1, including
+// Random valid parameter sets for the randomised tests (docs/model.md 10,
+// invariant 10, the property tests): over and beyond the ranges of Table 1, including
 // sets whose mode-I softening snaps back (ft0^2/GIC > kn). One generator, so
 // that every randomised test draws from the same population; the draw order
 // is part of each test's fixed-seed reproducibility.

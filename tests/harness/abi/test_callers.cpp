@@ -57,7 +57,7 @@ TEST_CASE("Callers: one trial, one traction in the law's signs, from either entr
   CHECK(t[2] == Approx(kVdp.ks * end[2]).epsilon(1e-12));
 }
 
-TEST_CASE("Callers: a call does not commit; accept and commit do", "[abi]") {
+TEST_CASE("Callers: a call does not commit but accept and commit do", "[abi]") {
   const bool uinter = GENERATE(false, true);
   CAPTURE(uinter);
   auto caller = make_caller(uinter);

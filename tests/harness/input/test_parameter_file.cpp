@@ -29,7 +29,7 @@ TEST_CASE("A parameter file gives the 14 values of Table 1 and where each was wr
   }
 }
 
-TEST_CASE("Bare numbers are read in the documented units; integers count as numbers", "[inputs]") {
+TEST_CASE("Bare numbers are read in the documented units and integers count as numbers", "[inputs]") {
   // Arrange
   const auto dir = fresh_directory("bare_numbers");
   const std::string file = write_file(dir / "p.toml", "kn = 209.9\n" + kAllButKn);

@@ -8,7 +8,7 @@ using namespace mortar;
 using namespace mortar::harness;
 using namespace mortar::harness::testing;
 
-TEST_CASE("Unspecified components hold what they did; the first step starts bonded at zero", "[inputs]") {
+TEST_CASE("Unspecified components hold what they did and the first step starts bonded at zero", "[inputs]") {
   // Act
   const Protocol p = read_protocol_file(data_file("short_shear.toml"));
   // Assert

@@ -229,7 +229,7 @@ TEST_CASE("The implicit solver reproduces the modified-Euler curve to the implic
   CHECK(std::abs(dissipation) <= 5e-4);
 }
 
-TEST_CASE("PNEWDT < 1 cuts the increment back; abandoned attempts leave no trace", "[implicit]") {
+TEST_CASE("PNEWDT < 1 cuts the increment back and abandoned attempts leave no trace", "[implicit]") {
   // Arrange: a substep budget of one makes the routine reject the large
   // increment (PNEWDT = 0.5) until the sub-increment is small enough.
   const ParameterSet params = read_parameter_file(data_file("vdp_sn0.5.toml"));
