@@ -6,7 +6,8 @@
 
 #include "abi/vuinteraction_call.hpp"
 #include "mortar/state.hpp"
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 
 namespace mortar::harness {
 

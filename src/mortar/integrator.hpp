@@ -6,9 +6,10 @@
 #include "mortar/failure.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/result.hpp"
-#include "mortar/return_mapping.hpp"
+#include "mortar/integration/local_problem.hpp"
 #include "mortar/state.hpp"
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 
 namespace mortar {
 

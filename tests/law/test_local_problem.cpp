@@ -7,8 +7,9 @@
 #include <cstdio>
 #include <vector>
 
-#include "mortar/return_mapping.hpp"
-#include "mortar/surface.hpp"
+#include "mortar/integration/local_problem.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

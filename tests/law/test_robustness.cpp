@@ -12,7 +12,8 @@
 #include <cstdio>
 #include <random>
 
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "random_parameters.hpp"

@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"

@@ -4,7 +4,8 @@
 
 #include <random>
 
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

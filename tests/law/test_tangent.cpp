@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

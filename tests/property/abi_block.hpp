@@ -13,7 +13,8 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
-#include "mortar/surface.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 #include "random_parameters.hpp"
 #include "stderr_capture.hpp"
 #include "test_scale.hpp"

@@ -6,7 +6,7 @@
 
 #include "mortar/integration/point.hpp"
 #include "mortar/result.hpp"
-#include "mortar/return_mapping.hpp"
+#include "mortar/integration/local_problem.hpp"
 
 namespace mortar {
 

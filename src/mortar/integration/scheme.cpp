@@ -12,7 +12,7 @@ namespace {
 constexpr double kTiny = 1e-300;
 // Implicit scheme: Newton iterations (all local solves) allowed per increment.
 // A smooth increment takes 3-10; 2e5 bounds the worst case to about 0.3 s
-// (tests/law/test_implicit.cpp, invariant 10: 35 of 48 000 extreme
+// (tests/law/test_robustness.cpp, invariant 10: 35 of 48 000 extreme
 // increments fail on it or at the smallest substep).
 constexpr int kMaxNewtonIterations = 200000;
 
