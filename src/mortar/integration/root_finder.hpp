@@ -44,20 +44,6 @@ double pegasus(Sample&& sample, double x0, double f0, double x1, double f1, int 
 struct CrossingBracket {
   bool active = false;
   double lo = 0, e_lo = 0, hi = 0, e_hi = 0;
-  // Records a trial substep of size `size` ending at e: the first opens the
-  // bracket on [0, size] (e0 at its start); a later one replaces the end on
-  // its side of the boundary (`past`: beyond it, the hi end).
-  void record(bool past, double e0, double size, double e) {
-    if (!active) {
-      *this = CrossingBracket{true, 0.0, e0, size, e};
-    } else if (past) {
-      hi = size;
-      e_hi = e;
-    } else {
-      lo = size;
-      e_lo = e;
-    }
-  }
   double next(int iteration) const {
     double x = lo + (hi - lo) * e_lo / (e_lo - e_hi);
     if (!(x > lo && x < hi) || iteration % 3 == 2) x = 0.5 * (lo + hi);
