@@ -62,8 +62,8 @@ IncrementResult failed(const Model& M, State& state, IncrementResult res, Failur
   if (tangent) {
     // The secant of the start state: finite, and the stiffness a solver
     // that cuts the increment back will meet first.
-    *tangent = check_state(state) ? Mat3(Vec3(M.p.kn, M.p.ks, M.p.ks).asDiagonal())
-                                  : Mat3(secant_stiffness(M, state.dn, state.ds, state.open).asDiagonal());
+    *tangent = valid ? Mat3(secant_stiffness(M, state.dn, state.ds, state.open).asDiagonal())
+                     : Mat3(Vec3(M.p.kn, M.p.ks, M.p.ks).asDiagonal());
     st.tangent_approximate = true;
   }
   return res;

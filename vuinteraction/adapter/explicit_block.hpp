@@ -193,8 +193,9 @@ struct ExplicitBlock {
     st[mortar::slot::substeps_rejected] = Real(s.substeps_rejected);
     st[mortar::slot::status] = Real(s.status);
     Real* stress_k = stress_of(k);
-    stress_k[0] = Real(-r.traction[0]);
-    for (int i = 1; i < counts.n_dir; ++i) stress_k[i] = Real(setup.shear_sign * r.traction[i]);
+    Real stress_start[3];
+    abaqus_stress(setup, r.traction, stress_start);
+    std::copy(stress_start, stress_start + counts.n_dir, stress_k);
     write_energies(k, r.elastic_energy, 0.0);
     if (!all_finite(stress_k, counts.n_dir) || !std::isfinite(double(sed[k]))) keep_start_outputs(k);
     return static_cast<int>(r.status.failure);
