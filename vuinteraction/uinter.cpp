@@ -24,7 +24,7 @@ constexpr mj_adapter::ExitUtility kExit = xit_;
 #endif
 
 constexpr mj_adapter::Routine kUinter = {"UINTER",
-                                         {"NDIR", "NDIR is 2 (2D) or 3 (3D)", "NSTATV", "NPROPS"},
+                                         {"NDIR", "NDIR is 2 (2D) or 3 (3D)", "NSTATV", "NPROPS", "DROT"},
                                          mj_adapter::kStandardDefaults,
                                          "point",
                                          kExit};
@@ -38,7 +38,7 @@ extern "C" void uinter_(
     const double* /*dtemp*/, const double* /*predef*/, const double* /*dpred*/, const double* /*time*/,
     const double* /*dtime*/, const double* /*freqr*/, const char* ciname, const char* /*slname*/,
     const char* /*msname*/, const double* props, const double* /*coords*/, const double* /*alocaldir*/,
-    const double* /*drot*/, const double* /*area*/, const double* /*chrlngth*/, const int* node, const int* ndir,
+    const double* drot, const double* /*area*/, const double* /*chrlngth*/, const int* node, const int* ndir,
     const int* nstatv, const int* /*npred*/, const int* nprops, const int* /*mcrd*/, const int* /*kstep*/,
     const int* /*kinc*/, const int* /*kit*/, const int* linper, int* /*lopenclose*/, int* /*lstate*/,
     int* /*lsdi*/, const int* /*lprint*/, int lenCiname, int /*lenSlname*/, int /*lenMsname*/) {
@@ -48,6 +48,7 @@ extern "C" void uinter_(
   c.perturbation = *linper == 1;
   c.rdisp = rdisp;
   c.drdisp = drdisp;
+  c.drot = drot;
   c.props = props;
   c.stress = stress;
   c.ddsddr = ddsddr;

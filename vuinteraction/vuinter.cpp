@@ -20,7 +20,7 @@ extern "C" void vuinter_(
     const int* jSlvUid, const int* /*jMstUid*/, const int* /*jConMstid*/,
     const mj_real* /*timStep*/, const mj_real* /*timGlb*/, const mj_real* /*dTimCur*/,
     const char* surfInt, const char* /*surfSlv*/, const char* /*surfMst*/,
-    const mj_real* rdisp, const mj_real* drdisp, const mj_real* /*drot*/,
+    const mj_real* rdisp, const mj_real* drdisp, const mj_real* drot,
     const mj_real* /*stiffDflt*/, const mj_real* /*condDflt*/, const mj_real* /*shape*/,
     const mj_real* /*coordSlv*/, const mj_real* /*coordMst*/, const mj_real* /*alocaldir*/,
     const mj_real* props, const mj_real* /*areaSlv*/,
@@ -36,8 +36,9 @@ extern "C" void vuinter_(
   b.penetration = rdisp;  // rdisp(1,k)
   b.penetration_stride = *nDir;
   b.d_rel_disp = drdisp;
+  b.d_rot = drot;
   b.node = jSlvUid;
   b.props = props;
   b.set_outputs(stress, statev, sed, spd, sfd, scd, svd, fluxSlv, fluxMst);
-  mj_adapter::run_call(mj_adapter::explicit_routine("VUINTER", "nStateVar"), surfInt, lenSurfInt, b);
+  mj_adapter::run_call(mj_adapter::explicit_routine("VUINTER", "nStateVar", "drot"), surfInt, lenSurfInt, b);
 }

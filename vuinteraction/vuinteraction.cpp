@@ -30,7 +30,7 @@ extern "C" void vuinteraction_(
     const char* surfInt, const char* /*surfSlv*/, const char* /*surfMst*/,
     const int* jConSlvUid, const int* /*jConMstUid*/,
     const mj_real* props, const mj_real* penetration, const mj_real* drDisp,
-    const mj_real* /*dRot*/, const mj_real* /*dircos*/, const mj_real* /*stiffDflt*/,
+    const mj_real* dRot, const mj_real* /*dircos*/, const mj_real* /*stiffDflt*/,
     const mj_real* /*condDflt*/, const mj_real* /*areaSlv*/, const mj_real* /*dircosSl*/,
     const mj_real* /*shapeSlv*/, const mj_real* /*shapeMst*/,
     const mj_real* /*coordSlv*/, const mj_real* /*coordMst*/,
@@ -44,9 +44,10 @@ extern "C" void vuinteraction_(
   b.state_stride = static_cast<long>(*nStates) * *nNodState;  // state(:,1,k): first node state of point k
   b.penetration = penetration;
   b.d_rel_disp = drDisp;
+  b.d_rot = dRot;
   b.node = *nNodSlv >= 1 ? jConSlvUid : nullptr;
   b.node_stride = *nNodSlv;
   b.props = props;
   b.set_outputs(stress, state, sed, spd, sfd, scd, svd, fluxSlv, fluxMst);
-  mj_adapter::run_call(mj_adapter::explicit_routine("VUINTERACTION", "nStates"), surfInt, lenSurfInt, b);
+  mj_adapter::run_call(mj_adapter::explicit_routine("VUINTERACTION", "nStates", "dRot"), surfInt, lenSurfInt, b);
 }

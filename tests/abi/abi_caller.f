@@ -143,7 +143,10 @@ c     nNodState = 1), with neutral values for what the law does not read.
          jslvid(1,k) = 1000 + k
    10 continue
       jmstid = 0
+c     the unit matrix: the tangent directions do not turn
       drot = 0
+      drot(1,1,:) = 1
+      drot(2,2,:) = 1
       dircos = 0
       stfdfl = 1.d3
       cndfl = 0
@@ -265,6 +268,8 @@ c     VUINTER run: a slave surface of nbc nodes, all passed every call.
       timglb = 0
       dtimcr = 1.d-6
       drot = 0
+      drot(1,1,:) = 1
+      drot(2,2,:) = 1
       stfdfl = 1.d3
       cndfl = 0
       shp = 0.25d0

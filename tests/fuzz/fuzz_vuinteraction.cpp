@@ -147,7 +147,8 @@ struct Block {
   int n_dir = 3, n_states = kSlots, n_node_states = 1, n_block = 1, n_props = 14, n_nod_slv = 1;
   std::vector<Real> stress, flux_slv, flux_mst, state, sed, sfd, scd, spd, svd, props, penetration, dr_disp;
   std::vector<int> slave_nodes, master_nodes;
-  // Arguments the adapter does not read, sized as declared all the same.
+  // The rotation increment (read in 3D: here the unit matrix) and the
+  // arguments the adapter does not read, sized as declared all the same.
   std::vector<Real> d_rot, dircos, per_point, dircos_sl, shape_slv, shape_mst, coord_slv, coord_mst, field;
 
   void allocate() {
@@ -161,7 +162,8 @@ struct Block {
     slave_nodes.resize(count(n_nod_slv) * nb);
     for (size_t i = 0; i < slave_nodes.size(); ++i) slave_nodes[i] = int(1000 + i);
     master_nodes.assign(4 * nb, 0);
-    d_rot.assign(4 * nb, Real(0));
+    d_rot.assign(4 * nb, Real(0));  // the unit matrix: the tangent directions do not turn
+    for (size_t k = 0; k < nb; ++k) d_rot[4 * k] = d_rot[4 * k + 3] = Real(1);
     dircos.assign(nd * nd * nb, Real(0));
     dircos_sl.assign(nd * nb, Real(0));
     shape_slv.assign(count(n_nod_slv) * nb, Real(0));

@@ -57,6 +57,7 @@ struct Block {
     std::vector<int> master_nodes(4 * n, 0);
     std::vector<double> d_rot(4 * n), dircos(d * d * n), per_point(n), dircos_sl(d * n), shape_slv(n),
         shape_mst(4 * n), coord_slv(d * n), coord_mst(4 * d * n), field(n);
+    for (size_t k = 0; k < n; ++k) d_rot[4 * k] = d_rot[4 * k + 3] = 1;  // the tangent directions do not turn
     char name[80], blank[80];
     std::memset(name, ' ', sizeof name);
     std::memset(blank, ' ', sizeof blank);

@@ -37,6 +37,7 @@ struct ArgumentNames {
   const char* n_dir_rule;
   const char* n_states;
   const char* n_props;
+  const char* rotation;  // dRot, drot, DROT
 };
 
 inline ArgumentError check_counts(const Counts& n, const ArgumentNames& names) {

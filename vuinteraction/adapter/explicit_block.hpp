@@ -10,6 +10,11 @@
 //   shear    the slips are the running sum of drDisp(2..nDir) (VUINTER:
 //            drdisp(2..nDir)); the first call contributes nothing, because the
 //            first call defines the zero (docs/model.md 1).
+//   rotation in 3D the tangential components of the stored vectors (plastic,
+//            crack and total separation) are first turned by dRot (VUINTER:
+//            drot) into this increment's tangent directions, whose components
+//            drDisp already has (adapter/rotation.hpp); a 2D joint has one
+//            tangent and nothing to turn, and dRot is not read.
 //   stress   stress(1) = -sigma_n (Abaqus: pressure positive; law: tension
 //            positive); stress(2..nDir) = shear_sign * tau, shear_sign = -1
 //            unless props(20) = +1 (see docs/abaqus.md for why, and how to
@@ -31,6 +36,7 @@
 
 #include "adapter/arguments.hpp"
 #include "adapter/report.hpp"
+#include "adapter/rotation.hpp"
 #include "mortar/integrator.hpp"
 
 namespace mj_adapter {
@@ -65,6 +71,7 @@ struct ExplicitBlock {
   const Real* penetration = nullptr;
   long penetration_stride = 1;     // 1 (VUINTERACTION) or nDir (VUINTER: rdisp(1,k))
   const Real* d_rel_disp = nullptr;  // (nDir, n_points)
+  const Real* d_rot = nullptr;       // (2, 2, n_points)
   const int* node = nullptr;       // user node number of point k, for messages
   long node_stride = 1;
   const Real* props = nullptr;
@@ -89,6 +96,7 @@ struct ExplicitBlock {
   Real* state_of(int k) const { return state + k * state_stride; }
   Real* stress_of(int k) const { return stress + static_cast<long>(k) * counts.n_dir; }
   const Real* d_rel_disp_of(int k) const { return d_rel_disp + static_cast<long>(k) * counts.n_dir; }
+  const Real* d_rot_of(int k) const { return d_rot + 4L * k; }
   double penetration_of(int k) const { return double(penetration[k * penetration_stride]); }
   int node_of(int k) const { return node ? node[k * node_stride] : 0; }
 
@@ -105,6 +113,24 @@ struct ExplicitBlock {
       if (counts.n_states > mortar::slot::status && counts.n_node_states >= 1)
         state_of(k)[mortar::slot::status] = Real(code);
     }
+  }
+
+  // The per-point arguments' rules, before any point is integrated: the
+  // first paired point (in 3D) whose dRot is not a rotation is reported and
+  // rejects the block. Returns its adapter code, or 0.
+  int check_points(const Caller& who, const ArgumentNames& names) const {
+    if (counts.n_dir != 3) return 0;
+    for (int k = 0; k < n_points; ++k) {
+      if (penetration_of(k) <= kUnpairedPenetration) continue;  // not integrated: dRot not used
+      const RotationCheck c = check_rotation(d_rot_of(k));
+      if (c.ok()) continue;
+      char index[16], where[96];
+      std::snprintf(index, sizeof index, ",%d", k + 1);
+      std::snprintf(where, sizeof where, "point %d of %d, slave node %d", k + 1, n_points, node_of(k));
+      report_rotation(who, names.rotation, index, where, d_rot_of(k), c);
+      return kBadRotation;
+    }
+    return 0;
   }
 
   // Integrates every point; reports the failed ones. False when any failed.
@@ -213,6 +239,7 @@ struct ExplicitBlock {
     if (!flags_valid(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
     mortar::load_state(st, s);
+    if (counts.n_dir == 3) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, separation_increment(k, st, s));
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);

@@ -23,9 +23,9 @@ constexpr ExitUtility kExplicitExit = nullptr;
 constexpr ExitUtility kExplicitExit = xplb_exit_;
 #endif
 
-constexpr Routine explicit_routine(const char* name, const char* states_argument) {
+constexpr Routine explicit_routine(const char* name, const char* states_argument, const char* rotation_argument) {
   return {name,
-          {"nDir", "nDir is 2 (2D) or 3 (3D)", states_argument, "nProps"},
+          {"nDir", "nDir is 2 (2D) or 3 (3D)", states_argument, "nProps", rotation_argument},
           kExplicitDefaults,
           "block",
           kExplicitExit};

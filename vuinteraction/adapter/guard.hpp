@@ -26,7 +26,7 @@ inline void stop_analysis(ExitUtility exit_utility) {
 // What differs between the routines around the same skeleton.
 struct Routine {
   const char* name;         // "VUINTERACTION", "VUINTER", "UINTER": messages
-  ArgumentNames arguments;  // how its argument list spells the checked sizes
+  ArgumentNames arguments;  // how its argument list spells the checked arguments
   Defaults defaults;        // what props(15) = 0 and props(20) = 0 mean
   const char* unit;         // "block" or "point": what keeps its start values
   ExitUtility exit_utility;
@@ -36,6 +36,10 @@ struct Routine {
 //   Counts counts;  const Real* props;
 //   void reject(int code)          finite outputs, `code` in SDV 21 as far as
 //                                  the declared arrays reach;
+//   int check_points(const Caller&, const ArgumentNames&)
+//                                  the per-point arguments' rules (dRot):
+//                                  reports the first break, returns its
+//                                  code or 0;
 //   bool integrate(const Caller&, const Setup&)
 //                                  the law over the call's points; false when
 //                                  the analysis must stop.
@@ -48,6 +52,12 @@ void run_call(const Routine& routine, const char* surf_int, int surf_int_length,
     if (a.code != 0) {
       report_argument(who, a);
       call.reject(a.code);
+      stop_analysis(exit_utility);
+      return;
+    }
+    const int point_code = call.check_points(who, routine.arguments);
+    if (point_code != 0) {
+      call.reject(point_code);
       stop_analysis(exit_utility);
       return;
     }

@@ -16,6 +16,13 @@
 //            the analysis; the law's slips are these totals, so the increment
 //            is RDISP(2..) - SDV 13..14 (a joint is bonded from the start of
 //            the analysis in shear).
+//   rotation Abaqus has turned RDISP(2..3) by DROT into this increment's
+//            tangent directions; in 3D the stored vectors (plastic, crack and
+//            total separation) are turned the same way before the increment
+//            is formed (adapter/rotation.hpp), else a turn of the directions
+//            would read as slip. 2D: one tangent, DROT is not read. A
+//            perturbation step does not read it either: the base state's
+//            secant stiffness is the same in every tangent direction.
 //   stress   STRESS(1) = -sigma_n (pressure positive); STRESS(2..NDIR) =
 //            shear_sign * tau with shear_sign = +1 unless props(20) = -1 (the
 //            convention of public working UINTER code, STRESS(2) = +K
@@ -52,6 +59,7 @@
 
 #include "adapter/arguments.hpp"
 #include "adapter/report.hpp"
+#include "adapter/rotation.hpp"
 #include "mortar/integrator.hpp"
 
 namespace mj_adapter {
@@ -68,6 +76,7 @@ struct StandardPoint {
   bool perturbation = false;  // LINPER = 1
   const double* rdisp = nullptr;
   const double* drdisp = nullptr;
+  const double* drot = nullptr;  // DROT(2,2)
   const double* props = nullptr;
   double *stress = nullptr, *ddsddr = nullptr, *statev = nullptr;
   double *flux = nullptr, *ddfddt = nullptr, *ddsddt = nullptr, *ddfddr = nullptr;
@@ -87,6 +96,18 @@ struct StandardPoint {
     *sed = std::isfinite(*sed) ? *sed : 0.0;
     *spd = 0;
     if (counts.n_states > mortar::slot::status) statev[mortar::slot::status] = code;
+  }
+
+  // DROT's rule where it is used (3D, a paired point, not a perturbation):
+  // a rotation. Reports a break and returns its adapter code, or 0.
+  int check_points(const Caller& who, const ArgumentNames& names) const {
+    if (counts.n_dir != 3 || perturbation || rdisp[0] <= kUnpairedPenetration) return 0;
+    const RotationCheck c = check_rotation(drot);
+    if (c.ok()) return 0;
+    char where[48];
+    std::snprintf(where, sizeof where, "node %d", node);
+    report_rotation(who, names.rotation, "", where, drot, c);
+    return kBadRotation;
   }
 
   // The law over this point. A rejected increment asks Abaqus for a smaller
@@ -151,6 +172,7 @@ struct StandardPoint {
     double* st = statev;
     mortar::State s;
     mortar::load_state(st, s);
+    if (counts.n_dir == 3) rotate_tangential_state(drot, s);
     const bool first = st[slot::initialised] == 0.0;
     // The reference is the start-of-increment position, the same in every
     // iteration of the first increment (RDISP - DRDISP).

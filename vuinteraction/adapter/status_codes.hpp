@@ -14,6 +14,7 @@ enum AdapterCode : int {
   kBadPropCount = -3,   // nProps below 14
   kBadProperty = -4,    // a property or control breaks its rule
   kBadNodeStates = -5,  // nNodState < 1
+  kBadRotation = -6,    // dRot (drot, DROT) of a point is not a rotation
   kInternalError = -9,  // an exception escaped the law (never expected)
 };
 
@@ -27,6 +28,7 @@ inline const char* status_meaning(int status) {
     case kBadPropCount: return "fewer than 14 properties";
     case kBadProperty: return "a property breaks its rule (the routine's message on stderr names it)";
     case kBadNodeStates: return "nNodState < 1";
+    case kBadRotation: return "dRot of a point is not a rotation (the routine's message on stderr names it)";
     default: return "the routine's internal error";
   }
 }
