@@ -30,7 +30,9 @@ constexpr double kPi = 3.14159265358979323846;
 
 // The tangent directions turn by `angle` (t1 towards t2): DROT, column-major,
 // takes the components of a fixed in-plane vector from v to DROT v.
-std::array<double, 4> turn(double angle) { return {std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle)}; }
+std::array<double, 4> turn(double angle) {
+  return {std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle)};
+}
 
 // One converged increment to penetration `pen` and accumulated global slip
 // (ux, 0), the tangent directions turned to `theta` from `theta_before`: RDISP

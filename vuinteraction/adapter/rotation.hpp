@@ -7,11 +7,15 @@
 // Convention: the stored (s1, s2) components v of every in-plane vector become
 // dRot v, dRot(i,j) read as row i, column j of the Fortran array (column-major:
 // drot[0] = dRot(1,1), drot[1] = dRot(2,1), drot[2] = dRot(1,2), drot[3] =
-// dRot(2,2)). This is how Abaqus's manuals ask user routines to use a rotation
-// increment on vector-valued state (UINTER/VUINTER/VUINTERACTION argument
-// descriptions; UMAT's DROT, applied as dR v and dR A dR^T), and, for UINTER,
-// what Abaqus has already done to the accumulated slips RDISP(2..NDIR).
-// [transcribed]: docs/abaqus.md says how to check it against a release.
+// dRot(2,2)): a turn of the directions by phi (t1 towards t2) is expected as
+// [cos phi, sin phi; -sin phi, cos phi]. This is how the Abaqus User
+// Subroutines Reference Guide has user routines apply a rotation increment to
+// vector-valued state (its UMAT: DROT v, and DROT A DROT^T for tensors; its
+// UINTER, VUINTER, VUINTERACTION entries: the rotation of the tangent
+// directions, for rotating such state), and, for UINTER, what Abaqus has
+// already done to the accumulated slips RDISP(2..3). [transcribed]: the
+// sources and how to check a release are in docs/abaqus.md, "Rotating
+// tangent directions".
 #pragma once
 
 #include <cmath>
@@ -50,7 +54,8 @@ RotationCheck check_rotation(const Real* drot) {
     }
   const double a = double(drot[0]), b = double(drot[1]), p = double(drot[2]), q = double(drot[3]);
   // dRot^T dRot = [a^2+b^2, a p+b q; a p+b q, p^2+q^2] for dRot = [a p; b q].
-  c.deviation = std::fmax(std::fabs(a * a + b * b - 1), std::fmax(std::fabs(p * p + q * q - 1), std::fabs(a * p + b * q)));
+  const double off = std::fabs(a * p + b * q);
+  c.deviation = std::fmax(std::fmax(std::fabs(a * a + b * b - 1), std::fabs(p * p + q * q - 1)), off);
   c.determinant = a * q - p * b;
   return c;
 }
