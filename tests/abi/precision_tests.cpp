@@ -91,7 +91,7 @@ size_t count(const std::string& text, const std::string& what) {
 }  // namespace
 
 // First in this file: the warning is once per process.
-TEST_CASE("Single precision, DEPVAR below 34: plain floats, named once on stderr; DEPVAR = 34 says nothing",
+TEST_CASE("Single precision, DEPVAR below 34: plain floats named once on stderr and DEPVAR = 34 says nothing",
           "[abi][precision]") {
   const std::vector<Real> props = props_of<Real>(mortar::testing::almeida_m15());
   mj_test::StderrCapture err;

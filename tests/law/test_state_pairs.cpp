@@ -81,7 +81,7 @@ TEST_CASE("State pairs: the low parts are SDV 24-34, one per accumulating variab
   CHECK(std::string(kLowStateNames[kPairedStateCount - kStateCount - 1]) == "delta_s2_lo");
 }
 
-TEST_CASE("State pairs: SDV 1-23 are the plain float layout; the pair gives the double back to 48 bits",
+TEST_CASE("State pairs: SDV 1-23 are the plain float layout and the pair gives the double back to 48 bits",
           "[state][pairs]") {
   std::mt19937 rng(20261111);
   double worst = 0;
@@ -146,7 +146,7 @@ void collect_on_surface(const Model& M, State s, const Vec3& d, int n, std::vect
 
 }  // namespace
 
-TEST_CASE("State pairs: rounding to pairs keeps a state on the surface within FTOL·ft0; plain floats do not",
+TEST_CASE("State pairs: rounding to pairs keeps a state on the surface within FTOL*ft0 where plain floats do not",
           "[state][pairs]") {
   // Almeida M15 opened to 0.05 mm, van der Pluijm sheared to 0.2 mm at
   // sigma_n = -1 MPa, both at 1e-5 mm: the start state of every next plastic
