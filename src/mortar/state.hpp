@@ -1,5 +1,6 @@
 // State of one interface point, and its named layout over the solver-owned
-// flat array (docs/model.md 3; positions 1-14 are a user-facing contract).
+// flat array (docs/model.md 3; positions 1-14 are a user-facing contract;
+// 24-34 hold single precision's float pairs).
 #pragma once
 
 #include <Eigen/Core>
