@@ -266,7 +266,7 @@ TEST_CASE("VUINTER: rdisp(1) is the penetration, unpaired nodes carry nothing", 
   CHECK(cp.stress[2] == Real(0));
 }
 
-TEST_CASE("VUINTER: nStateVar >= 34 keeps single precision's float pairs; double leaves SDV 24 on alone",
+TEST_CASE("VUINTER: nStateVar >= 34 keeps single precision's float pairs and double leaves SDV 24 on alone",
           "[abi][state]") {
   ContactPair cp(1, 2, paper_props(), mortar::kPairedStateCount);
   // Double: whatever SDV 24-34 hold stays there; single: a fresh (zero) array.
