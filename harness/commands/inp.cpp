@@ -19,7 +19,10 @@ int inp_command(const InpArgs& a, std::ostream& out) {
   const bool controls = !a.scheme.empty() || a.stol != 0;
   InpOptions o;
   o.name = a.name;
-  o.depvar = kStateCount;
+  // Abaqus/Explicit loads the single-precision routine unless the job says
+  // double=both; it keeps its state as float pairs only with DEPVAR >= 34
+  // (docs/model.md 3). The double routine reads the first 23 and ignores the rest.
+  o.depvar = kPairedStateCount;
   o.props.assign(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
   if (controls && a.scheme.empty()) o.props[kParameterCount] = 0.0;
   write_surface_interaction(out, o);

@@ -19,7 +19,7 @@ class ExplicitSolver : public MockSolver {
       : block_(settings.block) {
     AbiSetup setup;
     setup.n_dir = scene.directions();
-    setup.n_states = kStateCount;
+    setup.n_states = kStateCount;  // the double routine's layout; SDV 24-34 are single precision's pairs
     setup.props = props_for(parameters, settings.scheme, settings.stol);
     setup.stiffness_default = parameters.kn;
     const int points = scene.points();

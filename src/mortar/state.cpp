@@ -1,5 +1,8 @@
 #include "mortar/state.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace mortar {
 
 const char* const kStateNames[kStateCount] = {
@@ -7,5 +10,48 @@ const char* const kStateNames[kStateCount] = {
     "w_II",  "w_III", "d_n",    "d_s",    "delta_n", "delta_s1", "delta_s2",
     "open",  "D_plastic", "D_damage", "E_unilateral", "substeps_accepted",
     "substeps_rejected", "status", "reference_penetration", "initialised"};
+
+const char* const kLowStateNames[kPairedStateCount - kStateCount] = {
+    "dp_n_lo", "dp_s1_lo", "dp_s2_lo", "w_I_lo", "w_II_lo", "w_III_lo",
+    "d_n_lo",  "d_s_lo",   "delta_n_lo", "delta_s1_lo", "delta_s2_lo"};
+
+bool pair_consistent(float high, float low) {
+  if (!std::isfinite(high) || !std::isfinite(low)) return false;
+  const float h = std::fabs(high);
+  const float spacing = std::nextafter(h, std::numeric_limits<float>::infinity()) - h;
+  return std::fabs(low) <= spacing;
+}
+
+namespace {
+
+// The member behind a paired slot (State or const State).
+template <class S>
+auto paired_value(S& s, int high) -> decltype((s.wI)) {
+  switch (high) {
+    case slot::plastic_n: return s.plastic[0];
+    case slot::plastic_s1: return s.plastic[1];
+    case slot::plastic_s2: return s.plastic[2];
+    case slot::work_I: return s.wI;
+    case slot::work_II: return s.wII;
+    case slot::work_III: return s.wIII;
+    case slot::damage_n: return s.dn;
+    case slot::damage_s: return s.ds;
+    case slot::separation_n: return s.separation[0];
+    case slot::separation_s1: return s.separation[1];
+    default: return s.separation[2];
+  }
+}
+
+}  // namespace
+
+void load_state_pairs(const float* a, State& s) {
+  load_state(a, s);
+  for (const SlotPair& p : kPairedSlots) paired_value(s, p.high) = pair_value(a[p.high], a[p.low]);
+}
+
+void store_state_pairs(const State& s, float* a) {
+  store_state(s, a);
+  for (const SlotPair& p : kPairedSlots) a[p.low] = pair_low(paired_value(s, p.high), a[p.high]);
+}
 
 }  // namespace mortar

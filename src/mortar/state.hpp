@@ -1,5 +1,6 @@
 // State of one interface point, and its named layout over the solver-owned
-// flat array (docs/model.md 3; positions 1-14 are a user-facing contract).
+// flat array (docs/model.md 3; positions 1-14 are a user-facing contract;
+// 24-34 hold single precision's float pairs).
 #pragma once
 
 #include <Eigen/Core>
@@ -35,6 +36,39 @@ enum : int {
 inline constexpr int kStateCount = slot::count;
 // The law itself uses slots 1-21; the adapters add 22-23.
 inline constexpr int kLawStateCount = slot::reference_penetration;
+
+// Single precision: the low parts of the float pairs (docs/model.md 3). The
+// state variables that accumulate and feed back into the traction keep their
+// rounded value in their own slot (the high part, what users read) and the
+// rest, value - high rounded to float, here (SDV 24-34), one slot each, in
+// the order of kPairedSlots.
+namespace low_slot {
+enum : int {
+  plastic_n = slot::count, plastic_s1, plastic_s2,  // 24-26
+  work_I, work_II, work_III,                        // 27-29
+  damage_n, damage_s,                               // 30-31
+  separation_n, separation_s1, separation_s2,       // 32-34
+  end                                               // = 34 state variables
+};
+}  // namespace low_slot
+// The DEPVAR the single-precision routines need for float pairs; the double
+// ones need kStateCount.
+inline constexpr int kPairedStateCount = low_slot::end;
+
+// Each paired variable's high slot and its low slot.
+struct SlotPair {
+  int high, low;
+};
+inline constexpr SlotPair kPairedSlots[] = {
+    {slot::plastic_n, low_slot::plastic_n},         {slot::plastic_s1, low_slot::plastic_s1},
+    {slot::plastic_s2, low_slot::plastic_s2},       {slot::work_I, low_slot::work_I},
+    {slot::work_II, low_slot::work_II},             {slot::work_III, low_slot::work_III},
+    {slot::damage_n, low_slot::damage_n},           {slot::damage_s, low_slot::damage_s},
+    {slot::separation_n, low_slot::separation_n},   {slot::separation_s1, low_slot::separation_s1},
+    {slot::separation_s2, low_slot::separation_s2},
+};
+static_assert(sizeof kPairedSlots / sizeof kPairedSlots[0] == kPairedStateCount - kStateCount,
+              "one low slot per paired variable");
 
 // The value type the law works on (always double precision).
 struct State {
@@ -107,7 +141,26 @@ void store_state(const State& s, Real* a) {
   a[slot::status] = Real(s.status);
 }
 
+// A double as a float pair: high = the value rounded to float, low = the
+// remainder rounded to float; high + low (in double) carries about 48 bits,
+// enough for increments of 1e-8 mm on separations of about 1 mm
+// (docs/model.md 3). The remainder value - high is exact in double.
+inline float pair_low(double value, float high) { return float(value - double(high)); }
+inline double pair_value(float high, float low) { return double(high) + double(low); }
+
+// A low part belongs to its high part: at most one float spacing of it
+// (pair_low gives at most half). Anything else is not a pair this layout
+// wrote (a corrupted restart, slots some other code filled).
+bool pair_consistent(float high, float low);
+
+// load_state / store_state with the paired variables as float pairs: the
+// array holds at least kPairedStateCount values.
+void load_state_pairs(const float* a, State& s);
+void store_state_pairs(const State& s, float* a);
+
 // Short names of the state variables in slot order (for CSV headers, docs).
 extern const char* const kStateNames[kStateCount];
+// The same for the low parts, SDV 24-34 ("dp_n_lo", ...).
+extern const char* const kLowStateNames[kPairedStateCount - kStateCount];
 
 }  // namespace mortar

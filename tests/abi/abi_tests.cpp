@@ -195,6 +195,28 @@ TEST_CASE("VUINTER: rdisp(1) is the penetration, unpaired nodes carry nothing", 
   CHECK(cp.stress[2] == Real(0));
 }
 
+TEST_CASE("VUINTER: nStateVar >= 34 keeps single precision's float pairs and double leaves SDV 24 on alone",
+          "[abi][state]") {
+  ContactPair cp(1, 2, paper_props(), mortar::kPairedStateCount);
+  // Double: whatever SDV 24-34 hold stays there; single: a fresh (zero) array.
+  if (kDouble) std::fill(cp.statev.begin() + kStates, cp.statev.end(), Real(0.25));
+  cp.call();
+  cp.rdisp = {Real(-0.01), Real(0)};  // opened past the peak: every paired variable moves
+  cp.call();
+  CHECK(cp.statev[slot::status] == Real(0));
+  CHECK(cp.statev[slot::plastic_n] > Real(0));
+  int low_parts = 0;
+  for (const mortar::SlotPair& p : mortar::kPairedSlots) {
+    if (kDouble) {
+      CHECK(cp.statev[p.low] == Real(0.25));
+    } else {
+      CHECK(mortar::pair_consistent(float(cp.statev[p.high]), float(cp.statev[p.low])));
+      low_parts += cp.statev[p.low] != Real(0);
+    }
+  }
+  if (!kDouble) CHECK(low_parts > 0);
+}
+
 TEST_CASE("agreement with the law along mixed paths, point by point", "[abi][mapping]") {
   const mortar::Model model = paper_model();
   GeneralContact gc(5, 3, paper_props());

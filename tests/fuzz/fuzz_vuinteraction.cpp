@@ -282,6 +282,17 @@ bool reported(const std::string& text) {
   return text.find(std::string("VUINTERACTION, interaction '") + kName + "'") != std::string::npos;
 }
 
+// `text` without the single-precision routine's one warning per process that
+// DEPVAR < 34 falls back to plain floats (docs/model.md 3): not a report of
+// a point or an argument.
+std::string without_fallback_warning(const std::string& text) {
+  const size_t at = text.find("warning: DEPVAR = ");
+  if (at == std::string::npos) return text;
+  const size_t begin = text.rfind('\n', at), end = text.find('\n', at);
+  const size_t from = begin == std::string::npos ? 0 : begin + 1;
+  return text.substr(0, from) + (end == std::string::npos ? "" : text.substr(end + 1));
+}
+
 void check_call(const Block& b, const Block& before, const std::string& text, int call) {
   char when_buf[64];
   std::snprintf(when_buf, sizeof when_buf, "call %d", call + 1);
@@ -388,7 +399,8 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     if (b.sed[k] < Real(0)) fail("%s: point %d: sed < 0", when.c_str(), k + 1);
   }
   if (any_failure && !reported(text)) fail("%s: a point was rejected but nothing was reported", when.c_str());
-  if (!any_failure && !text.empty()) fail("%s: every point accepted, yet stderr got: '%s'", when.c_str(), text.c_str());
+  if (!any_failure && !without_fallback_warning(text).empty())
+    fail("%s: every point accepted, yet stderr got: '%s'", when.c_str(), text.c_str());
 }
 
 void print_stats() {

@@ -1,6 +1,8 @@
-// A caller of vuinteraction_ (double precision, standalone build) for the
-// property tests: a block of points with its arrays, called as Abaqus/Explicit
-// calls it, plus random valid parameter sets and loading paths (fixed seeds).
+// A caller of vuinteraction_ (standalone build, the routine's precision
+// mj_real: property_tests links the double routine, property_tests_single the
+// single one) for the property tests: a block of points with its arrays,
+// called as Abaqus/Explicit calls it, plus random valid parameter sets and
+// loading paths (fixed seeds).
 #pragma once
 
 #include <algorithm>
@@ -20,42 +22,44 @@
 #include "test_scale.hpp"
 #include "vuinteraction.h"
 
-static_assert(sizeof(mj_real) == sizeof(double), "the property tests call the double-precision routine");
-
 namespace mj_property {
 
 using mj_test::property_scale;
 using mj_test::scaled;
 
 namespace slot = mortar::slot;
-constexpr int kStates = mortar::kStateCount;
+using Real = mj_real;
+constexpr bool kSingle = sizeof(Real) == sizeof(float);
+// The DEPVAR the blocks declare: single precision keeps its float pairs in
+// SDV 24-34 (docs/model.md 3).
+constexpr int kStates = kSingle ? mortar::kPairedStateCount : mortar::kStateCount;
 
 // One VUINTERACTION block: nBlock points, one node state each.
 struct Block {
   int n_block, n_dir, n_states = kStates, n_props;
-  std::vector<double> stress, flux_slv, flux_mst, state, sed, sfd, scd, spd, svd;
-  std::vector<double> props, penetration, dr_disp;
+  std::vector<Real> stress, flux_slv, flux_mst, state, sed, sfd, scd, spd, svd;
+  std::vector<Real> props, penetration, dr_disp;
   std::vector<int> slave_nodes;
 
-  Block(int block, int dir, std::vector<double> p)
+  Block(int block, int dir, std::vector<Real> p)
       : n_block(block), n_dir(dir), n_props(int(p.size())), stress(size_t(dir) * block), flux_slv(block),
         flux_mst(block), state(size_t(kStates) * block), sed(block), sfd(block), scd(block), spd(block),
         svd(block), props(std::move(p)), penetration(block), dr_disp(size_t(dir) * block), slave_nodes(block) {
     for (int k = 0; k < block; ++k) slave_nodes[k] = 1001 + k;
   }
 
-  double* state_of(int k) { return &state[size_t(k) * kStates]; }
-  const double* state_of(int k) const { return &state[size_t(k) * kStates]; }
-  double* stress_of(int k) { return &stress[size_t(k) * n_dir]; }
-  const double* stress_of(int k) const { return &stress[size_t(k) * n_dir]; }
+  Real* state_of(int k) { return &state[size_t(k) * kStates]; }
+  const Real* state_of(int k) const { return &state[size_t(k) * kStates]; }
+  Real* stress_of(int k) { return &stress[size_t(k) * n_dir]; }
+  const Real* stress_of(int k) const { return &stress[size_t(k) * n_dir]; }
 
   void call() {
     const int n_nod_slv = 1, n_nod_mst = 4, n_temp = 0, n_fields = 1, n_node_states = 1;
     const int flags[3] = {1, 1, 0};
-    const double r_data[4] = {0, 0, 1e-6, 0};
+    const Real r_data[4] = {0, 0, Real(1e-6), 0};
     const size_t n = size_t(n_block), d = size_t(n_dir);
     std::vector<int> master_nodes(4 * n, 0);
-    std::vector<double> d_rot(4 * n), dircos(d * d * n), per_point(n), dircos_sl(d * n), shape_slv(n),
+    std::vector<Real> d_rot(4 * n), dircos(d * d * n), per_point(n), dircos_sl(d * n), shape_slv(n),
         shape_mst(4 * n), coord_slv(d * n), coord_mst(4 * d * n), field(n);
     for (size_t k = 0; k < n; ++k) d_rot[4 * k] = d_rot[4 * k + 3] = 1;  // the tangent directions do not turn
     char name[80], blank[80];
@@ -89,11 +93,24 @@ using mj_test::random_parameters;
 using mj_test::uniform;
 
 // props(1..14), then props(15) = scheme when not the default.
-inline std::vector<double> props_of(const mortar::Parameters& p, mortar::Scheme scheme = mortar::Scheme::modified_euler) {
-  std::vector<double> props(scheme == mortar::Scheme::modified_euler ? 14 : 15, 0.0);
-  for (int i = 0; i < 14; ++i) props[i] = mortar::parameter_at(p, i);
-  if (props.size() > 14) props[14] = double(static_cast<int>(scheme));
+inline std::vector<Real> props_of(const mortar::Parameters& p, mortar::Scheme scheme = mortar::Scheme::modified_euler) {
+  std::vector<Real> props(scheme == mortar::Scheme::modified_euler ? 14 : 15, Real(0));
+  for (int i = 0; i < 14; ++i) props[i] = Real(mortar::parameter_at(p, i));
+  if (props.size() > 14) props[14] = Real(static_cast<int>(scheme));
   return props;
+}
+
+// The model the routine builds from `props` (in its precision: single
+// precision rounds the parameters to float, which moves F by more than FTOL).
+inline mortar::Model model_of(const std::vector<Real>& props) {
+  double p[15] = {};
+  const int n = int(props.size());
+  for (int i = 0; i < n; ++i) p[i] = double(props[i]);
+  mortar::Parameters parameters;
+  mortar::Controls controls;
+  const mortar::ValidationError e = mortar::read_props(p, n, parameters, controls);
+  if (!e.ok()) std::abort();  // props_of writes valid sets only
+  return mortar::make_model(parameters, controls);
 }
 
 // One increment of a loading path in Abaqus terms: the change of the
@@ -127,29 +144,37 @@ inline Step random_step(std::mt19937& rng, const mortar::Parameters& p, int fami
 }
 
 // Applies the step of point k to the block's inputs (the first call of a
-// point defines its zero: it has no increment).
-inline void apply(Block& b, int k, const Step& s) {
-  b.penetration[k] += s.d_penetration;
-  double* dd = &b.dr_disp[size_t(k) * b.n_dir];
-  dd[0] = -s.d_penetration;
-  dd[1] = s.slip1;
-  if (b.n_dir == 3) dd[2] = s.slip2;
+// point defines its zero: it has no increment). Returns the separation
+// increment the routine sees (law signs): in single precision the inputs
+// are floats, so it is taken from them.
+inline mortar::Vec3 apply(Block& b, int k, const Step& s) {
+  const Real before = b.penetration[k];
+  b.penetration[k] = Real(double(before) + s.d_penetration);
+  Real* dd = &b.dr_disp[size_t(k) * b.n_dir];
+  dd[0] = Real(-s.d_penetration);
+  dd[1] = Real(s.slip1);
+  if (b.n_dir == 3) dd[2] = Real(s.slip2);
+  if (!kSingle) return mortar::Vec3(-s.d_penetration, s.slip1, b.n_dir == 3 ? s.slip2 : 0.0);
+  return mortar::Vec3(double(before) - double(b.penetration[k]), double(dd[1]), b.n_dir == 3 ? double(dd[2]) : 0.0);
 }
 
 // The law's view of point k after a call: traction in law signs (sigma_n > 0
 // tension; the default shear sign -1) and the state.
 inline mortar::Vec3 law_traction(const Block& b, int k) {
-  const double* s = b.stress_of(k);
-  return mortar::Vec3(-s[0], -s[1], b.n_dir == 3 ? -s[2] : 0.0);
+  const Real* s = b.stress_of(k);
+  return mortar::Vec3(-double(s[0]), -double(s[1]), b.n_dir == 3 ? -double(s[2]) : 0.0);
 }
+// The state as the routine of each precision loads it.
+inline void load_point_state(const float* a, mortar::State& s) { mortar::load_state_pairs(a, s); }
+inline void load_point_state(const double* a, mortar::State& s) { mortar::load_state(a, s); }
 inline mortar::State law_state(const Block& b, int k) {
   mortar::State s;
-  mortar::load_state(b.state_of(k), s);
+  load_point_state(b.state_of(k), s);
   return s;
 }
 
-inline bool all_finite(const double* v, size_t n) {
-  return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
+inline bool all_finite(const Real* v, size_t n) {
+  return std::all_of(v, v + n, [](Real x) { return std::isfinite(double(x)); });
 }
 
 }  // namespace mj_property

@@ -24,14 +24,14 @@ namespace {
 
 // Per-point storage of everything that persists between calls.
 struct PointStore {
-  std::vector<double> state = std::vector<double>(kStates, 0.0);
-  std::vector<double> stress;
-  double sed = 0, spd = 0;
-  double penetration = 0;
-  std::vector<double> dr_disp;
+  std::vector<Real> state = std::vector<Real>(kStates, Real(0));
+  std::vector<Real> stress;
+  Real sed = 0, spd = 0;
+  Real penetration = 0;
+  std::vector<Real> dr_disp;
 };
 
-bool same_bits(const double* a, const double* b, size_t n) { return std::memcmp(a, b, n * sizeof(double)) == 0; }
+bool same_bits(const Real* a, const Real* b, size_t n) { return std::memcmp(a, b, n * sizeof(Real)) == 0; }
 
 }  // namespace
 
@@ -45,7 +45,7 @@ TEST_CASE("Property: identical results for any grouping of points into blocks (1
     const mortar::Parameters p = random_parameters(rng);
     const mortar::Scheme scheme = set % 3 == 2 ? mortar::Scheme::forward_euler : mortar::Scheme::modified_euler;
     const int n_dir = set % 4 == 3 ? 2 : 3;
-    const std::vector<double> props = props_of(p, scheme);
+    const std::vector<Real> props = props_of(p, scheme);
     CAPTURE(set, n_dir, int(scheme));
 
     std::vector<Block> alone(n_points, Block(1, n_dir, props));
@@ -53,11 +53,11 @@ TEST_CASE("Property: identical results for any grouping of points into blocks (1
     std::vector<int> family(n_points);
     for (int k = 0; k < n_points; ++k) {
       family[k] = int(rng() % 5);
-      const double reference = uniform(rng, -1e-3, 1e-3);
+      const Real reference = Real(uniform(rng, -1e-3, 1e-3));
       alone[k].penetration[0] = reference;
       grouped[k].penetration = reference;
-      grouped[k].stress.assign(n_dir, 0.0);
-      grouped[k].dr_disp.assign(n_dir, 0.0);
+      grouped[k].stress.assign(n_dir, Real(0));
+      grouped[k].dr_disp.assign(n_dir, Real(0));
     }
     std::vector<int> order(n_points);
     std::iota(order.begin(), order.end(), 0);

@@ -24,6 +24,10 @@
 
 using namespace mj_property;
 
+// Double precision only: the corruption cases write values beyond a float's
+// range, and the restart file keeps 17 digits (property_tests).
+static_assert(!kSingle, "the restart and corruption tests drive the double-precision routine");
+
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

@@ -24,7 +24,8 @@
 //            damage + unilateral, so that the balance closes); sfd = scd =
 //            svd = 0; fluxes 0.
 //   state    the layout of mortar::slot (23 values; positions 1-14 as
-//            docs/model.md 3).
+//            docs/model.md 3); in single precision with DEPVAR >= 34 the
+//            accumulating variables as float pairs (adapter/state_storage.hpp).
 //   failure  a point whose increment the law rejects keeps its start state
 //            with the law's positive Failure code in SDV 21; the first few
 //            are reported on stderr, and the analysis stops.
@@ -37,6 +38,7 @@
 #include "adapter/arguments.hpp"
 #include "adapter/report.hpp"
 #include "adapter/rotation.hpp"
+#include "adapter/state_storage.hpp"
 #include "mortar/integrator.hpp"
 
 namespace mj_adapter {
@@ -135,9 +137,11 @@ struct ExplicitBlock {
 
   // Integrates every point; reports the failed ones. False when any failed.
   bool integrate(const Caller& who, const Setup& setup) const {
+    const StateStorage<Real> storage = StateStorage<Real>::of(counts.n_states);
+    if (storage.plain_float()) warn_plain_float(who, counts.n_states);
     int failures = 0;
     for (int k = 0; k < n_points; ++k) {
-      const int failure = integrate_point(setup, k);
+      const int failure = integrate_point(setup, storage, k);
       if (failure == 0) continue;
       if (++failures <= kMaxPointMessages) report_point(who, k, failure);
     }
@@ -228,7 +232,7 @@ struct ExplicitBlock {
   }
 
   // Integrates point k and writes its outputs. Returns the law's Failure code.
-  int integrate_point(const Setup& setup, int k) const {
+  int integrate_point(const Setup& setup, const StateStorage<Real>& storage, int k) const {
     namespace slot = mortar::slot;
     if (penetration_of(k) <= kUnpairedPenetration) {  // no opposite surface: no interaction
       std::fill(stress_of(k), stress_of(k) + counts.n_dir, Real(0));
@@ -236,18 +240,18 @@ struct ExplicitBlock {
       return 0;
     }
     Real* st = state_of(k);
-    if (!flags_valid(st)) return reject_point(k, mortar::Failure::invalid_state);
+    if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
-    mortar::load_state(st, s);
+    storage.load(st, s);
     if (counts.n_dir == 3) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, separation_increment(k, st, s));
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
     // The law's result in this routine's precision: a double beyond a float's
     // range would come back as infinity. Checked before anything is stored.
-    Real end[mortar::kStateCount];
-    std::copy(st, st + mortar::kStateCount, end);
-    mortar::store_state(s, end);
+    Real end[mortar::kPairedStateCount];
+    std::copy(st, st + storage.count, end);
+    storage.store(s, end);
     if (first) {
       end[slot::reference_penetration] = Real(penetration_of(k));
       end[slot::initialised] = Real(1);
@@ -256,10 +260,10 @@ struct ExplicitBlock {
     abaqus_stress(setup, r.traction, stress_end);
     const Real sed_end = Real(r.elastic_energy);
     const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
-    if (!all_finite(end, mortar::kStateCount) || !all_finite(stress_end, counts.n_dir) ||
+    if (!all_finite(end, storage.count) || !all_finite(stress_end, counts.n_dir) ||
         !std::isfinite(double(sed_end)) || !std::isfinite(double(spd_end)))
       return reject_point(k, mortar::Failure::non_finite_result);
-    std::copy(end, end + mortar::kStateCount, st);
+    std::copy(end, end + storage.count, st);
     std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
     write_energies(k, double(sed_end), double(spd_end));
     return 0;

@@ -1,0 +1,140 @@
+// The state array of the Explicit routines in both precisions (docs/model.md
+// 3, vuinteraction/adapter/state_storage.hpp): with DEPVAR = 23 the routine is
+// the law over the plain layout in its precision, bit for bit (single: the
+// fallback; double: always); in double precision SDV 24 onwards are never
+// touched and DEPVAR = 34 gives the DEPVAR = 23 results bit for bit; in single
+// precision DEPVAR >= 34 keeps SDV 1-23 as the plain layout reads them and
+// the low parts in SDV 24-34.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "one_point.hpp"
+#include "paper_sets.hpp"
+
+namespace {
+
+using namespace mj_abi_test;
+namespace slot = mortar::slot;
+constexpr bool kDouble = sizeof(Real) == sizeof(double);
+constexpr Real kSentinel = Real(-7.5);
+
+// A path that is elastic, then plastic in shear and opening, then softening:
+// penetration and slips at increment i of n.
+struct Inputs {
+  Real penetration, dr_disp[3];
+};
+Inputs inputs(int i, int n) {
+  const double t = double(i) / n, before = double(std::max(i - 1, 0)) / n;
+  const Real p = Real(1e-4 - 3e-3 * t);
+  return {p, {Real(0), Real(0.03 * (t - before)), Real(-0.01 * (t - before))}};
+}
+
+// What the routine computes over the plain layout in its precision: the law
+// between load_state and store_state, the separation increment and the
+// stress as the adapter forms them (adapter/explicit_block.hpp).
+struct PlainLayout {
+  Real state[mortar::kStateCount] = {};
+  Real stress[3] = {};
+
+  void call(const mortar::Model& M, const Inputs& in) {
+    mortar::State s;
+    mortar::load_state(state, s);
+    const bool first = state[slot::initialised] == Real(0);
+    const double reference = double(state[slot::reference_penetration]);
+    const mortar::Vec3 d = first ? mortar::Vec3::Zero()
+                                 : mortar::Vec3((reference - double(in.penetration)) - s.separation[0],
+                                                double(in.dr_disp[1]), double(in.dr_disp[2]));
+    const mortar::IncrementResult r = mortar::integrate_increment(M, s, d);
+    mortar::store_state(s, state);
+    if (first) {
+      state[slot::reference_penetration] = in.penetration;
+      state[slot::initialised] = Real(1);
+    }
+    stress[0] = Real(-r.traction[0]);
+    stress[1] = Real(-1.0 * r.traction[1]);
+    stress[2] = Real(-1.0 * r.traction[2]);
+  }
+};
+
+void apply(OnePoint& pt, const Inputs& in) {
+  pt.penetration = in.penetration;
+  std::copy(in.dr_disp, in.dr_disp + 3, pt.dr_disp);
+}
+
+std::vector<Real> m15_props() { return props_of<Real>(mortar::testing::almeida_m15()); }
+
+// The model the routine reads from props in its precision.
+mortar::Model model_of(const std::vector<Real>& props) {
+  double p[mortar::kParameterCount];
+  for (int i = 0; i < mortar::kParameterCount; ++i) p[i] = double(props[i]);
+  mortar::Parameters parameters;
+  mortar::Controls controls;
+  REQUIRE(mortar::read_props(p, mortar::kParameterCount, parameters, controls).ok());
+  return mortar::make_model(parameters, controls);
+}
+
+}  // namespace
+
+TEST_CASE("State array: with DEPVAR = 23 the routine is the law over the plain layout, bit for bit",
+          "[abi][state]") {
+  const mortar::Model model = model_of(m15_props());
+  OnePoint pt(m15_props(), mortar::kStateCount);
+  PlainLayout plain;
+  const int n = 400;
+  int differences = 0;
+  for (int i = 0; i <= n; ++i) {
+    apply(pt, inputs(i, n));
+    pt.call();
+    plain.call(model, inputs(i, n));
+    differences += !std::equal(plain.state, plain.state + mortar::kStateCount, pt.state.begin());
+    differences += !std::equal(plain.stress, plain.stress + 3, pt.stress);
+  }
+  CHECK(differences == 0);
+  CHECK(pt.state[slot::damage_n] > Real(0.5));  // the path softens
+}
+
+TEST_CASE("State array: slots beyond the routine's layout are never touched and in double precision "
+          "DEPVAR = 34 gives the DEPVAR = 23 results bit for bit",
+          "[abi][state]") {
+  const int declared = 40;
+  const int used = kDouble ? mortar::kStateCount : mortar::kPairedStateCount;
+  OnePoint wide(m15_props(), declared), narrow(m15_props(), mortar::kStateCount);
+  std::fill(wide.state.begin() + used, wide.state.end(), kSentinel);
+  const int n = 400;
+  int untouched = 0, differences = 0;
+  for (int i = 0; i <= n; ++i) {
+    apply(wide, inputs(i, n));
+    apply(narrow, inputs(i, n));
+    wide.call();
+    narrow.call();
+    untouched += std::all_of(wide.state.begin() + used, wide.state.end(), [](Real x) { return x == kSentinel; });
+    differences += !std::equal(narrow.state.begin(), narrow.state.end(), wide.state.begin());
+    differences += !std::equal(narrow.stress, narrow.stress + 3, wide.stress);
+  }
+  CHECK(untouched == n + 1);
+  if (kDouble) CHECK(differences == 0);
+  if (!kDouble) CHECK(differences > 0);  // the pairs carry what plain floats lose
+}
+
+TEST_CASE("State array: single precision with DEPVAR >= 34 keeps SDV 1-23 as the plain layout reads them and "
+          "the low parts in SDV 24-34",
+          "[abi][state]") {
+  if (kDouble) return;  // the double routine has no pairs (previous test)
+  OnePoint pt(m15_props(), mortar::kPairedStateCount);
+  const int n = 400;
+  int inconsistent = 0, nonzero_low = 0;
+  for (int i = 0; i <= n; ++i) {
+    apply(pt, inputs(i, n));
+    pt.call();
+    for (const mortar::SlotPair& p : mortar::kPairedSlots) {
+      const float high = float(pt.state[p.high]), low = float(pt.state[p.low]);
+      inconsistent += !mortar::pair_consistent(high, low) || float(mortar::pair_value(high, low)) != high;
+      nonzero_low += low != 0.0f;
+    }
+  }
+  CHECK(inconsistent == 0);
+  CHECK(nonzero_low > 0);
+}

@@ -1,0 +1,180 @@
+// The float pairs of the single-precision routines (src/mortar/state.hpp,
+// docs/model.md 3): the high parts are exactly the plain float layout users
+// read, the pair carries a double to about 48 bits, a low part that is not
+// its high part's remainder is recognised, and rounding the state into pairs
+// keeps a state on the yield surface within FTOL·ft0 of it, where plain
+// floats do not (the start of every plastic increment, docs/model.md 7.1).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mortar/integrator.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
+#include "mortar/state.hpp"
+#include "paper_sets.hpp"
+
+using namespace mortar;
+
+namespace {
+
+// Every paired variable of `s`, in the order of kPairedSlots.
+std::vector<double> paired_values(const State& s) {
+  return {s.plastic[0], s.plastic[1], s.plastic[2], s.wI, s.wII, s.wIII, s.dn, s.ds,
+          s.separation[0], s.separation[1], s.separation[2]};
+}
+
+State random_state(std::mt19937& rng) {
+  std::uniform_real_distribution<double> unit(0, 1), exponent(-9, 1);
+  auto magnitude = [&] { return std::pow(10.0, exponent(rng)) * (unit(rng) < 0.5 ? -1 : 1); };
+  State s;
+  s.plastic = Vec3(magnitude(), magnitude(), magnitude());
+  s.crack = Vec3(magnitude(), magnitude(), magnitude());
+  s.wI = std::abs(magnitude());
+  s.wII = std::abs(magnitude());
+  s.wIII = std::abs(magnitude());
+  s.dn = unit(rng);
+  s.ds = unit(rng);
+  s.separation = Vec3(magnitude(), magnitude(), magnitude());
+  s.open = unit(rng) < 0.5;
+  return s;
+}
+
+State round_trip_pairs(const State& s) {
+  float a[kPairedStateCount] = {};
+  store_state_pairs(s, a);
+  State back;
+  load_state_pairs(a, back);
+  return back;
+}
+
+State round_trip_float(const State& s) {
+  float a[kStateCount] = {};
+  store_state(s, a);
+  State back;
+  load_state(a, back);
+  return back;
+}
+
+}  // namespace
+
+TEST_CASE("State pairs: the low parts are SDV 24-34, one per accumulating variable", "[state][pairs]") {
+  CHECK(kPairedStateCount == 34);
+  CHECK(low_slot::plastic_n == 23);  // SDV 24
+  CHECK(low_slot::separation_s2 == 33);  // SDV 34
+  const int highs[] = {slot::plastic_n, slot::plastic_s1, slot::plastic_s2, slot::work_I, slot::work_II,
+                       slot::work_III, slot::damage_n, slot::damage_s, slot::separation_n, slot::separation_s1,
+                       slot::separation_s2};
+  int i = 0;
+  for (const SlotPair& p : kPairedSlots) {
+    CHECK(p.high == highs[i]);
+    CHECK(p.low == kStateCount + i);
+    ++i;
+  }
+  CHECK(std::string(kLowStateNames[0]) == "dp_n_lo");
+  CHECK(std::string(kLowStateNames[kPairedStateCount - kStateCount - 1]) == "delta_s2_lo");
+}
+
+TEST_CASE("State pairs: SDV 1-23 are the plain float layout and the pair gives the double back to 48 bits",
+          "[state][pairs]") {
+  std::mt19937 rng(20261111);
+  double worst = 0;
+  for (int n = 0; n < 2000; ++n) {
+    const State s = random_state(rng);
+    float plain[kStateCount] = {}, paired[kPairedStateCount] = {};
+    store_state(s, plain);
+    store_state_pairs(s, paired);
+    for (int i = 0; i < kStateCount; ++i) REQUIRE(paired[i] == plain[i]);
+    for (const SlotPair& p : kPairedSlots) REQUIRE(pair_consistent(paired[p.high], paired[p.low]));
+    const std::vector<double> in = paired_values(s), out = paired_values(round_trip_pairs(s));
+    for (size_t i = 0; i < in.size(); ++i) worst = std::max(worst, std::abs(out[i] - in[i]) / std::abs(in[i]));
+    const State back = round_trip_pairs(s);
+    CHECK(back.dn <= 1);
+    CHECK(back.ds <= 1);
+    CHECK(back.wI >= 0);
+  }
+  std::printf("float pair round trip: worst relative error %.3g (2^-48 = %.3g)\n", worst, std::ldexp(1.0, -48));
+  CHECK(worst <= std::ldexp(1.0, -47));
+}
+
+TEST_CASE("State pairs: a low part beyond one float spacing of its high part is not a pair", "[state][pairs]") {
+  const float high = 0.05f;
+  const float spacing = std::nextafter(high, 1.0f) - high;
+  CHECK(pair_consistent(high, 0.0f));
+  CHECK(pair_consistent(high, 0.5f * spacing));
+  CHECK(pair_consistent(high, -spacing));
+  CHECK_FALSE(pair_consistent(high, 2.0f * spacing));
+  CHECK_FALSE(pair_consistent(high, 1e-3f));
+  CHECK(pair_consistent(0.0f, 0.0f));
+  CHECK(pair_consistent(0.0f, std::numeric_limits<float>::denorm_min()));
+  CHECK_FALSE(pair_consistent(0.0f, 1e-30f));
+  CHECK_FALSE(pair_consistent(high, std::numeric_limits<float>::quiet_NaN()));
+  CHECK_FALSE(pair_consistent(std::numeric_limits<float>::infinity(), 0.0f));
+}
+
+namespace {
+
+// Worst |F(rounded) - F(exact)| / (FTOL ft0) over the plastic increments of a
+// double-precision run, the state rounded as `round` does.
+template <class Round>
+double worst_drift(const Model& M, const std::vector<State>& on_surface, Round round) {
+  double worst = 0;
+  for (const State& s : on_surface) {
+    const State r = round(s);
+    const double F = yield_function(traction_of(M, s), surface_of(M, s));
+    const double Fr = yield_function(traction_of(M, r), surface_of(M, r));
+    worst = std::max(worst, std::abs(Fr - F) / (M.controls.ftol * M.p.ft0));
+  }
+  return worst;
+}
+
+// The end states of the plastic increments (on the surface within FTOL) of
+// `n` increments `d` from `s`.
+void collect_on_surface(const Model& M, State s, const Vec3& d, int n, std::vector<State>& out) {
+  for (int i = 0; i < n; ++i) {
+    REQUIRE(integrate_increment(M, s, d).status.ok());
+    const Vec3 sigma = traction_of(M, s);
+    if (std::abs(yield_function(sigma, surface_of(M, s))) <= yield_tolerance(M, sigma)) out.push_back(s);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("State pairs: rounding to pairs keeps a state on the surface within FTOL*ft0 where plain floats do not",
+          "[state][pairs]") {
+  // Almeida M15 opened to 0.05 mm, van der Pluijm sheared to 0.2 mm at
+  // sigma_n = -1 MPa, both at 1e-5 mm: the start state of every next plastic
+  // increment is this end state as the routine stores and reloads it.
+  struct Run {
+    const char* name;
+    Model model;
+    State start;
+    Vec3 d;
+    int n;
+  };
+  State pressed;
+  const Model vdp = testing::model_with(testing::van_der_pluijm(-1.0), Scheme::modified_euler);
+  REQUIRE(integrate_increment(vdp, pressed, Vec3(-1.0 / vdp.p.kn, 0, 0)).status.ok());
+  const Run runs[] = {
+      {"M15 opening", testing::model_with(testing::almeida_m15(), Scheme::modified_euler), State(),
+       Vec3(1e-5, 0, 0), 5000},
+      {"vdp shear", vdp, pressed, Vec3(0, 1e-5, 0), 20000},
+  };
+  for (const Run& run : runs) {
+    std::vector<State> on_surface;
+    collect_on_surface(run.model, run.start, run.d, run.n, on_surface);
+    REQUIRE(on_surface.size() > size_t(run.n) / 2);
+    const double pairs = worst_drift(run.model, on_surface, round_trip_pairs);
+    const double plain = worst_drift(run.model, on_surface, round_trip_float);
+    std::printf("%s: %zu states on the surface; worst |dF|/(FTOL ft0): float pairs %.3g, plain float %.3g\n",
+                run.name, on_surface.size(), pairs, plain);
+    CHECK(pairs <= 1e-3);
+    CHECK(plain > 1);  // why the pairs: plain floats put the start state off the surface
+  }
+}
