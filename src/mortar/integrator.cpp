@@ -171,7 +171,12 @@ bool can_fall_back(Failure f) {
 }
 
 // One rung of the fallback chain: a scheme over the increment cut into
-// `pieces` equal pieces.
+// `pieces` equal pieces. Measured on 1.19 million random point-increments
+// (docs/model.md 9): modified Euler over 8 pieces integrates every
+// backward-Euler failure and most modified-Euler ones, 64 pieces most of the
+// rest, and forward Euler, which has no error control to exhaust, the few
+// left. Backward Euler itself (cut or not) and a tighter STOL integrate fewer
+// at a higher cost and are not rungs.
 struct Rung {
   Scheme scheme;
   int pieces;
@@ -182,7 +187,12 @@ constexpr Rung kChain[] = {
     {Scheme::forward_euler, 1024},
 };
 // The substeps (accepted + rejected) the whole chain may spend, in units of
-// Controls::max_substeps: the bound on its cost.
+// Controls::max_substeps: the bound on its cost. Worst case of one call: the
+// first attempt (its own budgets), then at most 4 x max_substeps substeps of
+// the explicit schemes over at most 8 + 64 + 1024 pieces (each with the
+// per-increment bounds on segments, crossing cuts and relaxation steps);
+// measured at most 0.36 s for one increment, almost all of it the implicit
+// scheme's own Newton budget in the first attempt. Nothing is allocated.
 constexpr long kFallbackBudget = 4;
 
 // Adds a piece's counts to the rung's.
