@@ -18,9 +18,13 @@ namespace mortar {
 const char* check_state(const State& s);
 
 // Integrates the separation increment d_separation (law signs) from `state`
-// and overwrites `state` with the end state. On failure the state is left as
-// it was and the result holds the start traction; nothing returned is ever
-// NaN or infinite.
+// and overwrites `state` with the end state. Where the chosen scheme fails on
+// a valid state and a finite increment, the fallback chain integrates the
+// increment again from the start state (docs/model.md 9) and the status says
+// so (IntegrationStatus::fell_back()). On failure (bad input, a non-finite
+// result, or no rung of the chain succeeded) the state is left as it was and
+// the result holds the start traction; nothing returned is ever NaN or
+// infinite.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation);
 
 // The same, and, when `tangent` is not null, the tangent d traction_end /
@@ -32,6 +36,8 @@ IncrementResult integrate_increment(const Model& model, State& state, const Vec3
 //   - explicit schemes: the continuum elastic-plastic tangent (Eq. 20) at the
 //     end point after plastic flow, else the secant stiffness;
 //   - elastic increment: the secant stiffness K(d, h) (Eq. 21);
+//   - increment integrated by the fallback chain: the tangent of its last
+//     piece, approximate;
 //   - failed increment: the secant stiffness of the start state.
 // Fixed-size, allocates nothing.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation, Mat3* tangent);

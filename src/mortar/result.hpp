@@ -3,6 +3,7 @@
 #pragma once
 
 #include "mortar/failure.hpp"
+#include "mortar/parameters.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
@@ -21,6 +22,14 @@ struct IntegrationStatus {
   // separation, or a regime switch in an increment with plastic flow (the
   // switch point is held fixed); docs/model.md 7.5.
   bool tangent_approximate = false;
+  // The chosen scheme failed on this increment with first_failure, and a rung
+  // of the fallback chain integrated it: fallback_scheme over fallback_pieces
+  // equal pieces (docs/model.md 9). The counts above are then the pieces'
+  // sums, and the tangent is approximate. fallback_pieces is 0 otherwise.
+  Failure first_failure = Failure::none;
+  Scheme fallback_scheme = Scheme::modified_euler;
+  int fallback_pieces = 0;
+  bool fell_back() const { return fallback_pieces > 0; }
   bool ok() const { return failure == Failure::none; }
 };
 

@@ -38,10 +38,6 @@ struct SchemeUnderTest {
   int random_sets = 200;
   unsigned random_seed = 20261122;
   int softening_increments = 1;
-  // Invariant 10: the local solve may fail at the smallest substep on the
-  // extreme path families, for at most 1 in 1000 increments; none on the
-  // moderate ones. False: no failure at all.
-  bool extreme_paths_may_fail = false;
 };
 
 inline SchemeUnderTest modified_euler_under_test() {
@@ -88,13 +84,13 @@ inline SchemeUnderTest backward_euler_under_test() {
   // 100 sets with their own seed: the extreme families cost the implicit
   // scheme many Newton iterations. The strength decays as 1/(1 + x) per step,
   // not exp(-x) (x = ft0 delta_in / GIC), so the full softening takes 100
-  // increments. On the extreme families the local solve may fail at the
-  // smallest substep (37 of 48 000 increments measured), reported as
-  // Failure::local_solve_failed or too_many_substeps.
+  // increments. On the extreme families the local solve fails at the
+  // smallest substep or on its Newton budget for a few increments in 1e3
+  // (37 of 48 000 measured); the fallback chain integrates them
+  // (docs/model.md 9).
   s.random_sets = 100;
   s.random_seed = 20261123;
   s.softening_increments = 100;
-  s.extreme_paths_may_fail = true;
   return s;
 }
 

@@ -1,0 +1,170 @@
+// docs/model.md 9: when the chosen scheme fails on an integrable point, the
+// increment is integrated again from its unchanged start state by the
+// fallback chain, and the result says so. The first attempt is forced to
+// fail by a substep budget (Controls::max_substeps) too small for it, and
+// met where backward Euler's local solve fails.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+#include "mortar/integrator.hpp"
+#include "paper_sets.hpp"
+#include "schemes.hpp"
+
+using namespace mortar;
+using namespace mortar::testing;
+
+namespace {
+
+// Compressed, then a large slip increment: softening with dilatancy, many
+// substeps in one increment.
+State pressed(const Model& M) {
+  State s;
+  integrate_increment(M, s, Vec3(-0.5 / M.p.kn, 0, 0));
+  return s;
+}
+const Vec3 kSlip(0, 0.05, 0.02);
+
+// The same increment cut into 2000 equal pieces, modified Euler at STOL 1e-8.
+Vec3 reference_traction(const Parameters& p, State s) {
+  const Model R = model_with(p, Scheme::modified_euler, 1e-8);
+  IncrementResult r;
+  for (int i = 0; i < 2000; ++i) r = integrate_increment(R, s, kSlip / 2000);
+  REQUIRE(r.status.ok());
+  return r.traction;
+}
+
+}  // namespace
+
+// Modified Euler, whose substep count grows with the increment (forward and
+// backward Euler take one substep for this plastic part).
+TEST_CASE("Fallback: an increment beyond the substep budget is integrated by the fallback chain, flagged",
+          "[fallback]") {
+  SchemeUnderTest S = modified_euler_under_test();
+  const Parameters p = almeida_m15();
+  // The substeps the chosen scheme needs with the default budget; half of
+  // that budget makes it fail.
+  State s = pressed(model_with(p, S.scheme));
+  const State start = s;
+  const IncrementResult free_run = integrate_increment(model_with(p, S.scheme), s, kSlip);
+  REQUIRE(free_run.status.ok());
+  REQUIRE_FALSE(free_run.status.fell_back());
+  const int needed = free_run.status.substeps_accepted + free_run.status.substeps_rejected;
+  CAPTURE(needed);
+  REQUIRE(needed >= 16);
+
+  Model tight = model_with(p, S.scheme);
+  tight.controls.max_substeps = needed / 2;
+  s = start;
+  Mat3 T;
+  const IncrementResult r = integrate_increment(tight, s, kSlip, &T);
+  CHECK(r.status.ok());
+  CHECK(r.status.fell_back());
+  CHECK(r.status.first_failure == Failure::too_many_substeps);
+  CHECK(r.status.fallback_pieces >= 8);
+  CHECK(r.status.tangent_approximate);
+  CHECK(T.allFinite());
+  CHECK(s.status == 0);
+  CHECK(check_state(s) == nullptr);
+  CHECK(s.separation == start.separation + kSlip);
+  // The fallback's answer is the law's: within the rung's accuracy of the
+  // finely cut reference (modified Euler at STOL 1e-5 over 8 pieces, or
+  // forward Euler over 1024).
+  const Vec3 ref = reference_traction(p, start);
+  CAPTURE(r.traction.transpose(), ref.transpose());
+  CHECK((r.traction - ref).norm() <= 1e-3 * ref.norm());
+  CHECK(r.elastic_energy > 0);
+  CHECK(std::isfinite(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral));
+}
+
+TEST_CASE("Fallback: an extreme increment on which backward Euler's local solve fails is integrated, flagged",
+          "[fallback]") {
+  // Invariant 10's first failure of the implicit scheme (a fully softened
+  // joint, an increment of hundreds of elastic limits): the Newton solve
+  // fails at the smallest substep.
+  const double props[14] = {725.42980874071702, 468.82736793136212, 0.10674923617214294, 0.081920844294977702, 0.0005866179503983285, 0.012333280475146107, 27.730518368766553, 19.039163651156876, 98.888413013032235, 24.30719404366079, 9.1567772672096606, 0, 6.4910723843172056, 2.2558286026880898};
+  const double state[21] = {2.2031731406072597, -0.1615047258920714, 0.32452402705476863, 14.300956330865185, -0.36432698013663545, 0.73207058248967072, 3.2625346910003396e-05, 0.011647352132536867, 0.11423721626900227, 1, 0.9999999066151406, 4.3079746906436158, -0.16150472581489309, 0.32460793046199388, 1, -317.70820398868227, 0.00014316676812129882, -0.00094645623165891214, 12, 20, 0};
+  const Vec3 d(-0.85162783962300359, -4.6650637803625283, 0);
+  Parameters p;
+  Controls c;
+  REQUIRE(read_props(props, 14, p, c).ok());
+  c.scheme = Scheme::implicit;
+  const Model M = make_model(p, c);
+  State start;
+  load_state(state, start);
+  State s = start;
+  Mat3 T;
+  const IncrementResult r = integrate_increment(M, s, d, &T);
+  CHECK(r.status.ok());
+  CHECK(r.status.fell_back());
+  CHECK(r.status.first_failure == Failure::local_solve_failed);
+  CHECK(r.status.tangent_approximate);
+  CHECK(T.allFinite());
+  CHECK(s.status == 0);
+  CHECK(s.separation == start.separation + d);
+  // Against the increment cut into 2000 pieces, modified Euler at STOL 1e-8.
+  const Model R = model_with(p, Scheme::modified_euler, 1e-8);
+  State fine = start;
+  IncrementResult q;
+  for (int i = 0; i < 2000; ++i) q = integrate_increment(R, fine, d / 2000);
+  REQUIRE(q.status.ok());
+  CAPTURE(r.traction.transpose(), q.traction.transpose(), s.dn, fine.dn);
+  CHECK((r.traction - q.traction).norm() <= 1e-3 * std::max(q.traction.norm(), p.ft0));
+  CHECK(std::abs(s.dn - fine.dn) <= 1e-6);
+}
+
+TEST_CASE("Fallback: forward Euler over 1024 pieces integrates a worn open joint that modified Euler cannot",
+          "[fallback]") {
+  // An open joint at d ~ 1 with almost no strength left (s ~ 1e-4), from the
+  // property tests' worn family: modified Euler runs out of substeps over the
+  // whole increment and over 8 and 64 pieces; the last rung integrates it.
+  const double props[14] = {662.47704927347479, 436.85981980617862, 0.50485108664701195, 0.69842634155911254, 0.00091145538989339365, 0.0036644609965412744, 30.611840279452011, 20.78262651301112, 0, 12.445535119497462, 1.9837604589664393, 2415.3361234788631, 13.477914917002609, 2.887080119386972};
+  const double state[21] = {0.00097067482063328749, 0.0025472912132265017, 0, 0.01308267264457035, 0.0073542338199952687, 0, 0.00010643607484104201, 0.0032324593502411898, 0.00060660229719922837, 0.99989360153755191, 0.9999999999992778, 0.0089466030476240445, 0.0027216152024154205, 0, 1, 0.0011630364690219507, 0.00010282332649628231, 0, 17, 2, 0};
+  const Vec3 d(0.00026327096802570052, -0.012802235746458876, 0);
+  Parameters p;
+  Controls c;
+  REQUIRE(read_props(props, 14, p, c).ok());
+  const Model M = make_model(p, c);
+  State start;
+  load_state(state, start);
+  State s = start;
+  const IncrementResult r = integrate_increment(M, s, d);
+  CHECK(r.status.ok());
+  CHECK(r.status.first_failure == Failure::too_many_substeps);
+  CHECK(r.status.fallback_scheme == Scheme::forward_euler);
+  CHECK(r.status.fallback_pieces == 1024);
+  CHECK(s.status == 0);
+  CHECK(check_state(s) == nullptr);
+  // Against forward Euler over 16 384 pieces: first order, so 16 times closer.
+  const Model R = model_with(p, Scheme::forward_euler);
+  State fine = start;
+  IncrementResult q;
+  for (int i = 0; i < 16384; ++i) q = integrate_increment(R, fine, d / 16384);
+  REQUIRE(q.status.ok());
+  CAPTURE(r.traction.transpose(), q.traction.transpose(), s.dn, fine.dn);
+  CHECK((r.traction - q.traction).norm() <= 1e-2 * std::max(q.traction.norm(), p.ft0));
+}
+
+TEST_CASE("Fallback: bad input is refused as it came, without a fallback", "[fallback]") {
+  const Model M = model_with(almeida_m15(), Scheme::modified_euler);
+  State s;
+  s.dn = 2;  // breaks a rule
+  const IncrementResult r = integrate_increment(M, s, Vec3(1e-3, 0, 0));
+  CHECK(r.status.failure == Failure::invalid_state);
+  CHECK_FALSE(r.status.fell_back());
+  State t;
+  const IncrementResult q = integrate_increment(M, t, Vec3(std::nan(""), 0, 0));
+  CHECK(q.status.failure == Failure::non_finite_increment);
+  CHECK_FALSE(q.status.fell_back());
+}
+
+TEST_CASE("Fallback: an increment the chosen scheme integrates is not touched by it", "[fallback]") {
+  const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
+  const Model M = model_with(almeida_m15(), S.scheme);
+  State s = pressed(M);
+  const IncrementResult r = integrate_increment(M, s, kSlip);
+  CHECK(r.status.ok());
+  CHECK_FALSE(r.status.fell_back());
+  CHECK(r.status.fallback_pieces == 0);
+  CHECK(r.status.first_failure == Failure::none);
+}
