@@ -21,7 +21,9 @@ struct SchemeTraits {
   bool relaxes_start_outside = false;
   // A point on the surface that the rate statement loads (dF . kS dd > 0, kS
   // on the damage-growing branch) is plastic however small the increment.
-  bool plastic_when_rate_loading = false;
+  // Every scheme: the elastic/plastic decision must not depend on how the
+  // increment is cut (docs/model.md 7.1, Decision - loading from the surface).
+  bool plastic_when_rate_loading = true;
   // The elastic-plastic intersection is polished to round-off by Newton, so
   // that the update is smooth in the increment (a checkable tangent).
   bool refines_intersection = false;
@@ -81,7 +83,7 @@ class ForwardEuler final : public SubstepScheme {
 class ModifiedEuler final : public SubstepScheme {
  public:
   ModifiedEuler(const Model& M, IntegrationStatus& st)
-      : SubstepScheme(SchemeTraits{true, false, false, false}), M_(M), st_(st) {}
+      : SubstepScheme(SchemeTraits{true, true, false, false}), M_(M), st_(st) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   double recheck(Point& Q, double dT, bool switch_here) override;
   void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;

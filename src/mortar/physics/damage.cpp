@@ -9,7 +9,7 @@
 namespace mortar {
 
 void disintegrate_if_no_strength(const Model& M, State& y) {
-  if (!y.open || surface_of(M, y).s > 0 || (y.dn >= 1 && y.ds >= 1)) return;
+  if (!y.open || !separated(surface_of(M, y).s_raw) || (y.dn >= 1 && y.ds >= 1)) return;
   const Vec3 e = y.elastic_separation();
   const double es2 = e[1] * e[1] + e[2] * e[2];
   y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e[0] * e[0] + 0.5 * M.p.ks * (1 - y.ds) * es2;

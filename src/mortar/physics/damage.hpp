@@ -29,9 +29,26 @@ inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, c
   return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
 }
 
-// An open joint with no strength left (s = 0) can only carry zero traction:
-// its surface is the apex of the cone, so the damage is complete (d = 1).
-// The elastic energy this releases is booked as damage dissipation.
+// The strength below which an open joint is completely separated
+// (docs/model.md 6, Decision - complete separation). The softening factor
+// only approaches 0 asymptotically on a mode-I path (s ~ exp(-delta/u)), so
+// an exact s = 0 is reached only by an integration overshoot, at a place that
+// depends on how the increment is cut. At 1e-7 the traction left is below
+// 1e-7 ft0 (under the 1e-6-of-peak splitting tolerance) and the separation is
+// a well-conditioned point to land a substep on (relative change of s per
+// substep >> round-off).
+constexpr double kSeparated = 1e-7;
+
+// Whether an open joint's strength s_raw has reached kSeparated (within the
+// relative round-off of the substep that lands on it, substepper.cpp).
+inline bool separated(double s_raw) { return s_raw <= kSeparated * (1 + 2e-9); }
+
+// An open joint with no strength left (s_raw <= kSeparated) can only carry
+// zero traction: its surface is (within kSeparated ft0) the apex of the cone,
+// so the damage is complete (d = 1), which freezes its plastic and crack
+// separations while open (rate stiffness 0, docs/model.md 6) until contact at
+// delta_n = delta_p_n. The elastic energy this releases is booked as damage
+// dissipation.
 void disintegrate_if_no_strength(const Model& M, State& y);
 
 // After plastic flow: damage follows the secant through the plastic
