@@ -46,6 +46,7 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
   }
   r = along_flow(M, P.sigma, f, num / f.denominator);
   r.dsigma += k.on_separation.cwiseProduct(dd);
+  r.plastic = true;
   if (dp) *dp = r.dplastic;
   return r;
 }

@@ -13,6 +13,7 @@ struct Rates {
   Vec3 dsigma = Vec3::Zero(), dplastic = Vec3::Zero(), dcrack = Vec3::Zero();
   double dwI = 0, dwII = 0, dwIII = 0, dDp = 0;
   bool snapback = false;  // no strain-driven solution: consistency denominator <= 0
+  bool plastic = false;   // the stage flows (else secant elasticity, or a snap-back)
 };
 
 // P += w r (everything but the separation, which the caller moves).

@@ -17,6 +17,7 @@ namespace mortar {
 inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
   const double e = y.elastic_separation()[0];
   if (!(e > 0)) return true;
+  if (dd[0] < 0) return false;  // closing: unloads on its secant (docs/model.md 6)
   return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
 }
 
@@ -24,6 +25,8 @@ inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, c
   const Vec3 e = y.elastic_separation();
   const double es = std::hypot(e[1], e[2]);
   if (!(es > 0)) return true;
+  // Slip applied against the elastic slip: unloads on its secant (docs/model.md 6).
+  if (dd[1] * e[1] + dd[2] * e[2] < 0) return false;
   const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
   const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
   return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
