@@ -6,7 +6,7 @@
 
 namespace mortar {
 
-void correct_drift(const Model& M, Point& P) {
+void correct_drift(const Model& M, Point& P, Branches grow) {
   for (int it = 0; it < 8; ++it) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
@@ -16,7 +16,7 @@ void correct_drift(const Model& M, Point& P) {
     if (f.denominator > 0) {
       Point C = P;
       add(C, along_flow(M, P.sigma, f, F / f.denominator), 1.0);
-      settle(M, C, e0);
+      settle(M, C, e0, grow);
       if (std::abs(yield_of(M, C)) < F) {
         P = C;
         continue;
@@ -32,7 +32,7 @@ void correct_drift(const Model& M, Point& P) {
     C.y.crack += crack_ratio(M).cwiseProduct(dp);
     C.y.dissipation_plastic += P.sigma.dot(dp);
     C.sigma -= (F / nn) * f.dF;
-    settle(M, C, e0);
+    settle(M, C, e0, grow);
     if (!(std::abs(yield_of(M, C)) < F)) return;
     P = C;
   }

@@ -53,16 +53,18 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
 
 }  // namespace
 
-Rates stage(const Model& M, const Point& P, const Vec3& dd) {
+Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
   const Surface S = surface_of(M, P.y);
   Vec3 dp;
   const Rates grow = branch_rates(M, P, S, dd, true, true, &dp);
   if (!P.y.open || grow.snapback) return grow;
-  const bool keep_n = damage_grows_normal(M, P.y, dd, dp);
-  const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
+  const bool keep_n = allowed.normal && damage_grows_normal(M, P.y, dd, dp);
+  const bool keep_s = allowed.shear && damage_grows_shear(M, P.y, dd, dp);
   if (keep_n && keep_s) return grow;
-  const Rates frozen = branch_rates(M, P, S, dd, keep_n, keep_s);
-  return frozen.snapback ? grow : frozen;
+  Rates frozen = branch_rates(M, P, S, dd, keep_n, keep_s);
+  if (frozen.snapback) return grow;
+  frozen.grow = Branches{keep_n, keep_s};
+  return frozen;
 }
 
 }  // namespace mortar

@@ -49,8 +49,9 @@ Attempt ForwardEuler::attempt(const Point& P, const Vec3& dd, double, const Rate
 Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
   const Controls& c = M_.controls;
   const Point A = first_stage_end(P, dd, r1);
+  grow_ = r1.grow;
   error_ = 0;
-  const Rates r2 = stage(M_, A, dd);
+  const Rates r2 = stage(M_, A, dd, r1.grow);
   // The second stage entered the snap-back region: halve; at the smallest
   // substep the first stage alone stands (forward Euler).
   if (r2.snapback && dT > c.min_substep) return retry_with(halved(c, dT));
@@ -90,7 +91,7 @@ double ModifiedEuler::recheck(Point& Q, double dT, bool switch_here) {
 // new regime and returns it to the surface if needed.
 void ModifiedEuler::commit(Point& P, const Point& Q, const Vec3&, double, double, bool switch_here) {
   P = Q;
-  if (!switch_here) correct_drift(M_, P);
+  if (!switch_here) correct_drift(M_, P, grow_);
 }
 
 double ModifiedEuler::next_size(double dT) {

@@ -65,7 +65,7 @@ double Substepper::run(const Vec3& d) {
     Point Q = *a.end;
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
     scheme.before_settle(Q);
-    settle(M, Q, P.y.elastic_separation());
+    settle(M, Q, P.y.elastic_separation(), scheme.traits.branches_from_first_stage ? r1.grow : Branches{});
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;

@@ -17,7 +17,6 @@ namespace mortar {
 inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
   const double e = y.elastic_separation()[0];
   if (!(e > 0)) return true;
-  if (dd[0] < 0) return false;  // closing: unloads on its secant (docs/model.md 6)
   return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
 }
 
@@ -54,13 +53,25 @@ inline bool separated(double s_raw) { return s_raw <= kSeparated * (1 + 2e-9); }
 // dissipation.
 void disintegrate_if_no_strength(const Model& M, State& y);
 
+// Which components of an open joint are on their damage-growing branch in a
+// substep (docs/model.md 6, Decision - open-regime branches); a component on
+// its frozen secant keeps its damage exactly.
+struct Branches {
+  bool normal = true;
+  bool shear = true;
+};
+
 // After plastic flow: damage follows the secant through the plastic
 // displacement while the joint is open (docs/model.md 6), never decreases,
 // and the traction `sigma` is then re-derived from Eq. 1 so that traction
 // and state always agree. The energy released by the damage growth is booked
 // as damage dissipation, 1/2 kbar (delta_e)^2 dd, trapezoidal in delta_e from
 // e_start (the elastic separation at the start of the step).
-void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start);
+// Only the components on their growing branch (`grow`) update their damage:
+// on a frozen secant the ratio |sigma|/(k delta_e) is 0/0 where delta_e
+// passes through zero (a reversal), and its round-off, ratcheted by the
+// irreversibility bound, would make the damage jump.
+void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow = {});
 
 // Whether an elastic normal separation e_n lies across the regime boundary
 // from a joint in the given regime (Eq. 13: h = 1 for e_n > 0).
