@@ -11,7 +11,8 @@ void correct_drift(const Model& M, Point& P, Branches grow) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
     if (F <= yield_tolerance(M, P.sigma)) return;
-    const Flow f = flow_of(M, P.sigma, S, rate_stiffness(M, P.y).on_flow);
+    const RateStiffness k = rate_stiffness(M, P.y, grow.normal, grow.shear);
+    const Flow f = flow_of(M, P.sigma, S, k.on_flow);
     const Vec3 e0 = P.y.elastic_separation();
     if (f.denominator > 0) {
       Point C = P;
@@ -24,8 +25,11 @@ void correct_drift(const Model& M, Point& P, Branches grow) {
     }
     const double nn = f.dF.squaredNorm();
     if (!(nn > 0)) return;
+    // The stiffness of each component's branch; a fully damaged one (0)
+    // takes its growing-branch value, as its traction is 0 after settle().
     const double h = P.y.open ? 1.0 : 0.0;
-    const Vec3 kA(M.p.kn * (1 + h * M.p.bn), M.p.ks * (1 + h * M.p.bs), M.p.ks * (1 + h * M.p.bs));
+    const Vec3 k_grow(M.p.kn * (1 + h * M.p.bn), M.p.ks * (1 + h * M.p.bs), M.p.ks * (1 + h * M.p.bs));
+    const Vec3 kA = (k.on_flow.array() > 0).select(k.on_flow, k_grow);
     Point C = P;
     const Vec3 dp = (F / nn) * f.dF.cwiseQuotient(kA);
     C.y.plastic += dp;

@@ -20,12 +20,21 @@ inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, 
   return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
 }
 
+// Slip applied against the elastic slip (docs/model.md 6, Decision -
+// unloading slip on the tension cap): the shear unloads on its secant
+// towards the plastic slip, whatever the plastic flow does; on the growing
+// branch it would unload towards the inelastic slip instead, and the secant
+// damage would jump towards 1 while the elastic slip is still positive.
+inline bool slip_reverses(const State& y, const Vec3& dd) {
+  const Vec3 e = y.elastic_separation();
+  return dd[1] * e[1] + dd[2] * e[2] < 0;
+}
+
 inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
   const Vec3 e = y.elastic_separation();
   const double es = std::hypot(e[1], e[2]);
   if (!(es > 0)) return true;
-  // Slip applied against the elastic slip: unloads on its secant (docs/model.md 6).
-  if (dd[1] * e[1] + dd[2] * e[2] < 0) return false;
+  if (slip_reverses(y, dd)) return false;
   const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
   const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
   return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
