@@ -64,6 +64,12 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
   Branches b{allowed.normal, allowed.shear && !slip_reverses(P.y, dd)};
   Vec3 dp;
   Rates r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+  if (r.snapback && b.shear != allowed.shear) {
+    // The unloading slip has no strain-driven solution: the growing branch
+    // stands, as for any frozen branch below.
+    b = allowed;
+    r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+  }
   r.grow = b;
   if (r.snapback) return r;
   for (int pass = 0; pass < 2; ++pass) {
