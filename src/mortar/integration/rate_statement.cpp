@@ -51,6 +51,12 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
   return r;
 }
 
+// The secant (elastic) predictor leaves the surface: dF . K dd > 0.
+bool secant_loads(const Model& M, const Point& P, const Surface& S, const Vec3& dd) {
+  const Vec3 K = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open);
+  return flow_of(M, P.sigma, S, K).dF.dot(K.cwiseProduct(dd)) > 0;
+}
+
 }  // namespace
 
 Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
@@ -77,9 +83,10 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
                         b.shear && damage_grows_shear(M, P.y, dd, dp)};
     if (next.normal == b.normal && next.shear == b.shear) break;
     Rates frozen = branch_rates(M, P, S, dd, next.normal, next.shear, &dp);
-    // No strain-driven solution on the frozen branch: the more growing one
-    // stands (settle keeps the damage from decreasing).
-    if (frozen.snapback) break;
+    // No strain-driven solution on the frozen branch (a snap-back, or no
+    // flow although the secant predictor leaves the surface): the more
+    // growing one stands (settle keeps the damage from decreasing).
+    if (frozen.snapback || (!frozen.plastic && secant_loads(M, P, S, dd))) break;
     b = next;
     r = frozen;
     r.grow = b;
