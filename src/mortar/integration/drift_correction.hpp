@@ -12,6 +12,7 @@ namespace mortar {
 // outside the surface is corrected: one that ends inside (F < 0) is
 // admissible, and pulling it out would need a negative plastic multiplier,
 // i.e. works and damage that decrease.
-void correct_drift(const Model& M, Point& P);
+// `grow`: the damage branches of the substep being corrected.
+void correct_drift(const Model& M, Point& P, Branches grow = {});
 
 }  // namespace mortar

@@ -20,6 +20,8 @@ inline bool outside_surface(const Model& M, const Point& P) {
 }
 
 // settle() of the point's state and traction (docs/model.md 6).
-inline void settle(const Model& M, Point& P, const Vec3& e_start) { settle(M, P.y, P.sigma, e_start); }
+inline void settle(const Model& M, Point& P, const Vec3& e_start, Branches grow = {}) {
+  settle(M, P.y, P.sigma, e_start, grow);
+}
 
 }  // namespace mortar

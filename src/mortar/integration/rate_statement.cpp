@@ -46,22 +46,52 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
   }
   r = along_flow(M, P.sigma, f, num / f.denominator);
   r.dsigma += k.on_separation.cwiseProduct(dd);
+  r.plastic = true;
   if (dp) *dp = r.dplastic;
   return r;
 }
 
+// The secant (elastic) predictor leaves the surface: dF . K dd > 0.
+bool secant_loads(const Model& M, const Point& P, const Surface& S, const Vec3& dd) {
+  const Vec3 K = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open);
+  return flow_of(M, P.sigma, S, K).dF.dot(K.cwiseProduct(dd)) > 0;
+}
+
 }  // namespace
 
-Rates stage(const Model& M, const Point& P, const Vec3& dd) {
+Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
   const Surface S = surface_of(M, P.y);
+  if (!P.y.open) return branch_rates(M, P, S, dd, true, true);
+  // From the most growing candidate the secant rule admits, freeze each
+  // component whose damage the candidate's solution would decrease, until
+  // the branches agree with their own solution (at most two freezes). A
+  // slip against the elastic slip is frozen from the start, so that its
+  // growing-branch solution does not decide the normal branch.
+  Branches b{allowed.normal, allowed.shear && !slip_reverses(P.y, dd)};
   Vec3 dp;
-  const Rates grow = branch_rates(M, P, S, dd, true, true, &dp);
-  if (!P.y.open || grow.snapback) return grow;
-  const bool keep_n = damage_grows_normal(M, P.y, dd, dp);
-  const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
-  if (keep_n && keep_s) return grow;
-  const Rates frozen = branch_rates(M, P, S, dd, keep_n, keep_s);
-  return frozen.snapback ? grow : frozen;
+  Rates r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+  if (r.snapback && b.shear != allowed.shear) {
+    // The unloading slip has no strain-driven solution: the growing branch
+    // stands, as for any frozen branch below.
+    b = allowed;
+    r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+  }
+  r.grow = b;
+  if (r.snapback) return r;
+  for (int pass = 0; pass < 2; ++pass) {
+    const Branches next{b.normal && damage_grows_normal(M, P.y, dd, dp),
+                        b.shear && damage_grows_shear(M, P.y, dd, dp)};
+    if (next.normal == b.normal && next.shear == b.shear) break;
+    Rates frozen = branch_rates(M, P, S, dd, next.normal, next.shear, &dp);
+    // No strain-driven solution on the frozen branch (a snap-back, or no
+    // flow although the secant predictor leaves the surface): the more
+    // growing one stands (settle keeps the damage from decreasing).
+    if (frozen.snapback || (!frozen.plastic && secant_loads(M, P, S, dd))) break;
+    b = next;
+    r = frozen;
+    r.grow = b;
+  }
+  return r;
 }
 
 }  // namespace mortar

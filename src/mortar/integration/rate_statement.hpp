@@ -13,6 +13,8 @@ struct Rates {
   Vec3 dsigma = Vec3::Zero(), dplastic = Vec3::Zero(), dcrack = Vec3::Zero();
   double dwI = 0, dwII = 0, dwIII = 0, dDp = 0;
   bool snapback = false;  // no strain-driven solution: consistency denominator <= 0
+  bool plastic = false;   // the stage flows (else secant elasticity, or a snap-back)
+  Branches grow;          // open regime: the components on their damage-growing branch
 };
 
 // P += w r (everything but the separation, which the caller moves).
@@ -35,6 +37,9 @@ inline bool snaps_back(const Flow& f) {
 // follows its frozen secant instead. Where the frozen branch has no
 // strain-driven solution, the growing branch stands (settle keeps the damage
 // from decreasing).
-Rates stage(const Model& M, const Point& P, const Vec3& dd);
+// `allowed`: components that may grow (a Heun pair's second stage keeps
+// frozen what its first stage froze, so that the pair integrates one branch
+// and settle() finds the traction it integrated).
+Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed = {});
 
 }  // namespace mortar

@@ -49,8 +49,9 @@ Attempt ForwardEuler::attempt(const Point& P, const Vec3& dd, double, const Rate
 Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
   const Controls& c = M_.controls;
   const Point A = first_stage_end(P, dd, r1);
+  grow_ = r1.grow;
   error_ = 0;
-  const Rates r2 = stage(M_, A, dd);
+  const Rates r2 = stage(M_, A, dd, r1.grow);
   // The second stage entered the snap-back region: halve; at the smallest
   // substep the first stage alone stands (forward Euler).
   if (r2.snapback && dT > c.min_substep) return retry_with(halved(c, dT));
@@ -90,7 +91,7 @@ double ModifiedEuler::recheck(Point& Q, double dT, bool switch_here) {
 // new regime and returns it to the surface if needed.
 void ModifiedEuler::commit(Point& P, const Point& Q, const Vec3&, double, double, bool switch_here) {
   P = Q;
-  if (!switch_here) correct_drift(M_, P);
+  if (!switch_here) correct_drift(M_, P, grow_);
 }
 
 double ModifiedEuler::next_size(double dT) {
@@ -102,13 +103,17 @@ double ModifiedEuler::next_size(double dT) {
 }
 
 // Local error of the Heun pair relative to the end values (Sloan et al.
-// 2001, Eq. for R_n+1), over the traction, the softening factor and the
-// wear exponent; the traction norm is floored at 1e-3 ft0 so that states
-// near zero traction do not force endless subdivision.
+// 2001, Eq. for R_n+1), over the traction, the softening factor (relative)
+// and the wear exponent; the traction norm is floored at 1e-3 ft0 so that
+// states near zero traction do not force endless subdivision.
 double ModifiedEuler::local_error(const Rates& r1, const Rates& r2, const Point& N) const {
   const double floor = 1e-3 * M_.stress_scale;
   const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
-  const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC);
+  // The softening factor relative to what is left of it: where s runs out
+  // (towards complete separation, kSeparated) an absolute error lets the
+  // place of the separation depend on the cuts (docs/model.md 7.1).
+  const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) /
+                     std::max(surface_of(M_, N.y).s, kSeparated);
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
   return std::max(e_sigma, std::max(e_s, e_t));
 }

@@ -21,13 +21,18 @@ struct SchemeTraits {
   bool relaxes_start_outside = false;
   // A point on the surface that the rate statement loads (dF . kS dd > 0, kS
   // on the damage-growing branch) is plastic however small the increment.
-  bool plastic_when_rate_loading = false;
+  // Every scheme: the elastic/plastic decision must not depend on how the
+  // increment is cut (docs/model.md 7.1, Decision - loading from the surface).
+  bool plastic_when_rate_loading = true;
   // The elastic-plastic intersection is polished to round-off by Newton, so
   // that the update is smooth in the increment (a checkable tangent).
   bool refines_intersection = false;
   // The tangent is the consistent one (TangentTracker), else the continuum
   // tangent of Eq. 20 after plastic flow.
   bool consistent_tangent = false;
+  // The damage branches of a substep are those its first stage took (the
+  // explicit schemes); the implicit scheme's local solve picks its own.
+  bool branches_from_first_stage = false;
 };
 
 // What one attempted substep came to.
@@ -68,7 +73,7 @@ class SubstepScheme {
 // One explicit step of the rate statement per substep, no error control.
 class ForwardEuler final : public SubstepScheme {
  public:
-  ForwardEuler() : SubstepScheme(SchemeTraits{}) {}
+  ForwardEuler() : SubstepScheme(SchemeTraits{false, true, false, false, true}) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   double next_size(double) override { return 1; }
 
@@ -81,7 +86,7 @@ class ForwardEuler final : public SubstepScheme {
 class ModifiedEuler final : public SubstepScheme {
  public:
   ModifiedEuler(const Model& M, IntegrationStatus& st)
-      : SubstepScheme(SchemeTraits{true, false, false, false}), M_(M), st_(st) {}
+      : SubstepScheme(SchemeTraits{true, true, false, false, true}), M_(M), st_(st) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   double recheck(Point& Q, double dT, bool switch_here) override;
   void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
@@ -92,6 +97,7 @@ class ModifiedEuler final : public SubstepScheme {
   const Model& M_;
   IntegrationStatus& st_;
   Point end_;
+  Branches grow_;  // the first stage's damage branches (drift correction)
   double error_ = 0;
   bool last_rejected_ = false;
 };

@@ -16,6 +16,8 @@ double Substepper::run(const Vec3& d) {
   at_boundary_ = false;
   cut_ = CrossingBracket{};
   cuts_ = 0;
+  sep_cut_ = CrossingBracket{};
+  sep_cuts_ = 0;
   double T = 0, dT = 1;
   // Every pass of the loop counts against the budget, so no path through
   // it (cuts, relaxations) can spin forever.
@@ -50,6 +52,9 @@ double Substepper::run(const Vec3& d) {
       return T;
     }
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
+    const Separation sep = separation(*a.end, dT);
+    if (sep == Separation::cut) continue;
+    const bool separates = sep == Separation::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
     if (crossing_kind == Crossing::from_boundary) {
       at_boundary_ = true;
@@ -60,13 +65,16 @@ double Substepper::run(const Vec3& d) {
     Point Q = *a.end;
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
     scheme.before_settle(Q);
-    settle(M, Q, P.y.elastic_separation());
-    if (const double retry = scheme.recheck(Q, dT, switch_here); retry > 0) {
+    settle(M, Q, P.y.elastic_separation(), scheme.traits.branches_from_first_stage ? r1.grow : Branches{});
+    // A substep that lands on a boundary (regime or complete separation) is
+    // exact there: neither rejected for drift nor drift-corrected off it.
+    const bool lands = switch_here || separates;
+    if (const double retry = scheme.recheck(Q, dT, lands); retry > 0) {
       dT = retry;
       ++st.substeps_rejected;
       continue;
     }
-    scheme.commit(P, Q, dd, T, dT, switch_here);
+    scheme.commit(P, Q, dd, T, dT, lands);
     ++st.substeps_accepted;
     T += dT;
     if (switch_here) {
@@ -108,6 +116,37 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
   cuts_ = 0;
   cut_ = CrossingBracket{};
   return on_boundary ? Crossing::ends_on_boundary : Crossing::none;
+}
+
+// Complete separation inside the substep (docs/model.md 6, Decision -
+// complete separation): a substep of an open joint that takes s_raw below
+// kSeparated is shortened to end on it (regula falsi on the substep size in
+// log(s_raw / kSeparated), bisection as a safeguard), so that where the joint
+// separates does not depend on the cuts; settle() then disintegrates it.
+Substepper::Separation Substepper::separation(const Point& N, double& dT) {
+  if (!P.y.open) return Separation::none;
+  const double s0 = surface_of(M, P.y).s_raw, s1 = surface_of(M, N.y).s_raw;
+  if (separated(s0)) return Separation::none;
+  const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
+  const bool below = g1 < -1e-9;
+  if (!below && !sep_cut_.active) return Separation::none;
+  if (!sep_cut_.active) {
+    sep_cut_ = CrossingBracket{true, 0.0, std::log(s0 / kSeparated), dT, g1};
+  } else if (below) {
+    sep_cut_.hi = dT;
+    sep_cut_.e_hi = g1;
+  } else {
+    sep_cut_.lo = dT;
+    sep_cut_.e_lo = g1;
+  }
+  if (std::abs(g1) > 1e-9 && sep_cuts_ < kMaxCrossingCuts) {
+    dT = sep_cut_.next(sep_cuts_);
+    ++sep_cuts_;
+    return Separation::cut;
+  }
+  sep_cuts_ = 0;
+  sep_cut_ = CrossingBracket{};
+  return separated(s1) ? Separation::lands : Separation::none;
 }
 
 // The implicit scheme's step that ends on the regime boundary (BoundaryStep):

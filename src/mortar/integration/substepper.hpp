@@ -2,8 +2,8 @@
 // (docs/model.md 7.1, 7.2, 7.5): the substep budget, the return at fixed
 // separation where the rate statement has no strain-driven solution, the
 // regime-crossing bracket that ends a substep on the boundary delta_e_n = 0
-// (6), settle() and the step-size control, which the scheme (scheme.hpp)
-// steers.
+// (6), the separation bracket that ends it on s = kSeparated (6), settle()
+// and the step-size control, which the scheme (scheme.hpp) steers.
 #pragma once
 
 #include <algorithm>
@@ -35,6 +35,13 @@ class Substepper {
     from_boundary,     // P is on the boundary already and the step moves across
   };
   Crossing crossing(const Point& N, const Vec3& dd, double& dT);
+  // What the separation bracket makes of a substep that ends at N.
+  enum class Separation {
+    none,   // stays above kSeparated (or was separated already)
+    cut,    // went below (or bracketing): retry with the new dT
+    lands,  // ends on kSeparated: accept, settle() disintegrates
+  };
+  Separation separation(const Point& N, double& dT);
   double end_on_boundary(const Point& N, double done);
 
   const Model& M;
@@ -45,6 +52,8 @@ class Substepper {
   bool at_boundary_ = false;
   CrossingBracket cut_;
   int cuts_ = 0;
+  CrossingBracket sep_cut_;
+  int sep_cuts_ = 0;
 };
 
 // Round-off scale of the regime boundary delta_e_n = 0 at a state.

@@ -9,7 +9,7 @@
 namespace mortar {
 
 void disintegrate_if_no_strength(const Model& M, State& y) {
-  if (!y.open || surface_of(M, y).s > 0 || (y.dn >= 1 && y.ds >= 1)) return;
+  if (!y.open || !separated(surface_of(M, y).s_raw) || (y.dn >= 1 && y.ds >= 1)) return;
   const Vec3 e = y.elastic_separation();
   const double es2 = e[1] * e[1] + e[2] * e[2];
   y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e[0] * e[0] + 0.5 * M.p.ks * (1 - y.ds) * es2;
@@ -17,13 +17,13 @@ void disintegrate_if_no_strength(const Model& M, State& y) {
   y.ds = 1;
 }
 
-void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start) {
+void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow) {
   if (y.open) {
     const Vec3 e = y.elastic_separation();
     const double es = std::hypot(e[1], e[2]), es0 = std::hypot(e_start[1], e_start[2]);
     double dn = y.dn, ds = y.ds;
-    if (e[0] > 0) dn = std::clamp(1.0 - sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
-    if (es > 0) ds = std::clamp(1.0 - shear_norm(sigma) / (M.p.ks * es), y.ds, 1.0);
+    if (grow.normal && e[0] > 0) dn = std::clamp(1.0 - sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
+    if (grow.shear && es > 0) ds = std::clamp(1.0 - shear_norm(sigma) / (M.p.ks * es), y.ds, 1.0);
     y.dissipation_damage += 0.25 * M.p.kn * (dn - y.dn) * (e_start[0] * e_start[0] + e[0] * e[0]) +
                             0.25 * M.p.ks * (ds - y.ds) * (es0 * es0 + es * es);
     y.dn = dn;

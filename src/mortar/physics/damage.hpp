@@ -20,19 +20,55 @@ inline bool damage_grows_normal(const Model& M, const State& y, const Vec3& dd, 
   return y.dn * (dd[0] - dp[0]) <= M.p.bn * dp[0] + 1e-14 * std::abs(dd[0]);
 }
 
+// Slip applied against the elastic slip (docs/model.md 6, Decision -
+// unloading slip on the tension cap): the shear unloads on its secant
+// towards the plastic slip, whatever the plastic flow does; on the growing
+// branch it would unload towards the inelastic slip instead, and the secant
+// damage would jump towards 1 while the elastic slip is still positive.
+inline bool slip_reverses(const State& y, const Vec3& dd) {
+  const Vec3 e = y.elastic_separation();
+  return dd[1] * e[1] + dd[2] * e[2] < 0;
+}
+
 inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
   const Vec3 e = y.elastic_separation();
   const double es = std::hypot(e[1], e[2]);
   if (!(es > 0)) return true;
+  if (slip_reverses(y, dd)) return false;
   const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
   const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
   return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
 }
 
-// An open joint with no strength left (s = 0) can only carry zero traction:
-// its surface is the apex of the cone, so the damage is complete (d = 1).
-// The elastic energy this releases is booked as damage dissipation.
+// The strength below which an open joint is completely separated
+// (docs/model.md 6, Decision - complete separation). The softening factor
+// only approaches 0 asymptotically on a mode-I path (s ~ exp(-delta/u)), so
+// an exact s = 0 is reached only by an integration overshoot, at a place that
+// depends on how the increment is cut. At 1e-7 the traction left is below
+// 1e-7 ft0 (under the 1e-6-of-peak splitting tolerance) and the separation is
+// a well-conditioned point to land a substep on (relative change of s per
+// substep >> round-off).
+constexpr double kSeparated = 1e-7;
+
+// Whether an open joint's strength s_raw has reached kSeparated (within the
+// relative round-off of the substep that lands on it, substepper.cpp).
+inline bool separated(double s_raw) { return s_raw <= kSeparated * (1 + 2e-9); }
+
+// An open joint with no strength left (s_raw <= kSeparated) can only carry
+// zero traction: its surface is (within kSeparated ft0) the apex of the cone,
+// so the damage is complete (d = 1), which freezes its plastic and crack
+// separations while open (rate stiffness 0, docs/model.md 6) until contact at
+// delta_n = delta_p_n. The elastic energy this releases is booked as damage
+// dissipation.
 void disintegrate_if_no_strength(const Model& M, State& y);
+
+// Which components of an open joint are on their damage-growing branch in a
+// substep (docs/model.md 6, Decision - open-regime branches); a component on
+// its frozen secant keeps its damage exactly.
+struct Branches {
+  bool normal = true;
+  bool shear = true;
+};
 
 // After plastic flow: damage follows the secant through the plastic
 // displacement while the joint is open (docs/model.md 6), never decreases,
@@ -40,7 +76,11 @@ void disintegrate_if_no_strength(const Model& M, State& y);
 // and state always agree. The energy released by the damage growth is booked
 // as damage dissipation, 1/2 kbar (delta_e)^2 dd, trapezoidal in delta_e from
 // e_start (the elastic separation at the start of the step).
-void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start);
+// Only the components on their growing branch (`grow`) update their damage:
+// on a frozen secant the ratio |sigma|/(k delta_e) is 0/0 where delta_e
+// passes through zero (a reversal), and its round-off, ratcheted by the
+// irreversibility bound, would make the damage jump.
+void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow = {});
 
 // Whether an elastic normal separation e_n lies across the regime boundary
 // from a joint in the given regime (Eq. 13: h = 1 for e_n > 0).
