@@ -113,29 +113,29 @@ TEST_CASE("Fallback: an extreme increment on which backward Euler's local solve 
   CHECK(std::abs(s.dn - fine.dn) <= 1e-6);
 }
 
-TEST_CASE("Fallback: forward Euler over 1024 pieces integrates a worn open joint that modified Euler cannot",
+TEST_CASE("Fallback: a worn open joint at d ~ 1 and s ~ 1e-4 is integrated and agrees with forward Euler over "
+          "16384 pieces",
           "[fallback]") {
-  // An open joint at d ~ 1 with almost no strength left (s ~ 1e-4), from the
-  // property tests' worn family: modified Euler runs out of substeps over the
-  // whole increment and over 8 and 64 pieces; the last rung integrates it.
+  // From the property tests' worn family. Modified Euler once ran out of
+  // substeps here over the whole increment and over 8 and 64 pieces, and the
+  // chain's last rung (forward Euler over 1024 pieces) integrated it; with the
+  // branch choice of docs/model.md 6 the scheme integrates it itself. Either
+  // way the answer must be the finely cut one.
   const double props[14] = {662.47704927347479, 436.85981980617862, 0.50485108664701195, 0.69842634155911254, 0.00091145538989339365, 0.0036644609965412744, 30.611840279452011, 20.78262651301112, 0, 12.445535119497462, 1.9837604589664393, 2415.3361234788631, 13.477914917002609, 2.887080119386972};
   const double state[21] = {0.00097067482063328749, 0.0025472912132265017, 0, 0.01308267264457035, 0.0073542338199952687, 0, 0.00010643607484104201, 0.0032324593502411898, 0.00060660229719922837, 0.99989360153755191, 0.9999999999992778, 0.0089466030476240445, 0.0027216152024154205, 0, 1, 0.0011630364690219507, 0.00010282332649628231, 0, 17, 2, 0};
   const Vec3 d(0.00026327096802570052, -0.012802235746458876, 0);
   Parameters p;
   Controls c;
   REQUIRE(read_props(props, 14, p, c).ok());
-  const Model M = make_model(p, c);
   State start;
   load_state(state, start);
   State s = start;
-  const IncrementResult r = integrate_increment(M, s, d);
+  const IncrementResult r = integrate_increment(make_model(p, c), s, d);
   CHECK(r.status.ok());
-  CHECK(r.status.first_failure == Failure::too_many_substeps);
-  CHECK(r.status.fallback_scheme == Scheme::forward_euler);
-  CHECK(r.status.fallback_pieces == 1024);
   CHECK(s.status == 0);
   CHECK(check_state(s) == nullptr);
-  // Against forward Euler over 16 384 pieces: first order, so 16 times closer.
+  // Against forward Euler over 16 384 pieces (first order: its own error is
+  // about 1/16 of the 1024-piece rung's).
   const Model R = model_with(p, Scheme::forward_euler);
   State fine = start;
   IncrementResult q;

@@ -241,10 +241,11 @@ TEST_CASE("Property: energy closure converges as the increments shrink (400 path
 // open joint with d_n, d_s ~ 1 and almost no strength left (s ~ 1e-4), where
 // the consistency denominator of the blended normal flow is tiny; the
 // modified-Euler substeps cut at the regime boundary until the pass budget
-// (4 x max substeps) runs out. The fallback chain integrates the increment
-// and says so (docs/model.md 9); the point is not rejected.
-TEST_CASE("Fallback: the slip increment of an open joint at d ~ 1 and s ~ 1e-4 is integrated (too many substeps "
-          "in modified Euler)",
+// (4 x max substeps) ran out, and the fallback chain integrated the
+// increment (docs/model.md 9). With the branch choice of docs/model.md 6 the
+// scheme integrates it itself; either way the point is not rejected.
+TEST_CASE("Fallback: the slip increment of an open joint at d ~ 1 and s ~ 1e-4 is integrated (it once ran out of "
+          "substeps in modified Euler)",
           "[property][fallback]") {
   struct Case {
     double props[14], state[21], increment[3];
@@ -277,9 +278,9 @@ TEST_CASE("Fallback: the slip increment of an open joint at d ~ 1 and s ~ 1e-4 i
     const mortar::IncrementResult r =
         mortar::integrate_increment(model, s, mortar::Vec3(c.increment[0], c.increment[1], c.increment[2]));
     CAPTURE(r.status.substeps_accepted, r.status.substeps_rejected);
+    // Integrated: once by the fallback chain (modified Euler ran out of
+    // substeps), now by the scheme itself (docs/model.md 6, the branch choice).
     CHECK(r.status.failure == mortar::Failure::none);
-    CHECK(r.status.fell_back());
-    CHECK(r.status.first_failure == mortar::Failure::too_many_substeps);
     CHECK(s.status == 0);
     CHECK(mortar::check_state(s) == nullptr);
     const mortar::Vec3 start(c.state[slot::separation_n], c.state[slot::separation_s1], c.state[slot::separation_s2]);
