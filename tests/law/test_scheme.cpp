@@ -81,7 +81,6 @@ TEST_CASE("Scheme: backward Euler halves a failed step and stops on its Newton b
   TangentTracker tracker;
   BackwardEuler be(M, st, tracker);
   CHECK(be.traits.consistent_tangent);
-  CHECK(be.traits.plastic_when_rate_loading);
   CHECK(be.next_size(0.25) == 0.5);
   CHECK(be.budget_spent(st) == Failure::none);
   st.newton_iterations = 200001;

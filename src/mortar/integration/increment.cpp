@@ -58,13 +58,11 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   const Vec3 dsig = K.cwiseProduct(rest);
   const bool on_surface = std::abs(F0) <= tol0;
   const bool loading = n.dot(dsig) > 0;
-  const bool at_edge = frac * std::abs(rest[0]) <= boundary_eps(M_, P_.y);
   // On the surface, loading is decided by the direction of the secant
   // (elastic) predictor, dF . K dd > 0, however small its rise: the same for
-  // every cut of the increment (docs/model.md 7.1, Decision - loading from
-  // the surface).
-  const bool rate_loading = scheme_.traits.plastic_when_rate_loading && on_surface && loading;
-  if (F_at(frac) <= tol_at(frac) && !(on_surface && loading && at_edge) && !rate_loading) {
+  // every cut of the increment and every scheme (docs/model.md 7.1, Decision -
+  // loading from the surface).
+  if (F_at(frac) <= tol_at(frac) && !(on_surface && loading)) {
     P_.y.separation += frac * rest;
     P_.sigma = traction_of(M_, P_.y);
     if (tangent_) {

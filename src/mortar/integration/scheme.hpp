@@ -19,11 +19,6 @@ struct SchemeTraits {
   // A segment that starts outside the surface returns to it at fixed
   // separation first (else the substeps start from there).
   bool relaxes_start_outside = false;
-  // A point on the surface that the rate statement loads (dF . kS dd > 0, kS
-  // on the damage-growing branch) is plastic however small the increment.
-  // Every scheme: the elastic/plastic decision must not depend on how the
-  // increment is cut (docs/model.md 7.1, Decision - loading from the surface).
-  bool plastic_when_rate_loading = true;
   // The elastic-plastic intersection is polished to round-off by Newton, so
   // that the update is smooth in the increment (a checkable tangent).
   bool refines_intersection = false;
@@ -73,7 +68,7 @@ class SubstepScheme {
 // One explicit step of the rate statement per substep, no error control.
 class ForwardEuler final : public SubstepScheme {
  public:
-  ForwardEuler() : SubstepScheme(SchemeTraits{false, true, false, false, true}) {}
+  ForwardEuler() : SubstepScheme(SchemeTraits{false, false, false, true}) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   double next_size(double) override { return 1; }
 
@@ -86,7 +81,7 @@ class ForwardEuler final : public SubstepScheme {
 class ModifiedEuler final : public SubstepScheme {
  public:
   ModifiedEuler(const Model& M, IntegrationStatus& st)
-      : SubstepScheme(SchemeTraits{true, true, false, false, true}), M_(M), st_(st) {}
+      : SubstepScheme(SchemeTraits{true, false, false, true}), M_(M), st_(st) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   double recheck(Point& Q, double dT, bool switch_here) override;
   void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
@@ -107,7 +102,7 @@ class ModifiedEuler final : public SubstepScheme {
 class BackwardEuler final : public SubstepScheme {
  public:
   BackwardEuler(const Model& M, IntegrationStatus& st, TangentTracker& tangent)
-      : SubstepScheme(SchemeTraits{false, true, true, true}), M_(M), st_(st), tangent_(tangent) {}
+      : SubstepScheme(SchemeTraits{false, true, true}), M_(M), st_(st), tangent_(tangent) {}
   Failure budget_spent(const IntegrationStatus& st) const override;
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   void before_settle(const Point& Q) override;
