@@ -139,6 +139,47 @@ void add_calibration_paths(const std::string& data_dir, bool quick, std::vector<
   }
 }
 
+// What a bed joint at the toe or heel of a rocking wall goes through, three
+// times with different amplitudes: the joint opens to well past complete
+// separation (15 to 40 softening lengths u = GIC/ft0; separation, s_raw <=
+// s_sep, comes after about 16: model.md 6, Decision -- complete separation),
+// closes to delta_n = 0 (contact is regained at delta_n = delta_p_n, about
+// 0.011 mm, so that is about 2.4 MPa of compression), and slides under that
+// compression (slips of 0.04, -0.06 and 0.05 mm, past the elastic slip of
+// about 0.02 mm), then reopens to zero traction. Every closing must find the
+// same contact point however the path is cut into increments.
+std::vector<std::vector<Vec3>> rocking_legs(const Parameters& p) {
+  const double u = p.GIC / p.ft0;  // mode-I softening length [mm]
+  std::vector<Vec3> corners;
+  double slip = 0;
+  for (const auto& [opening, next_slip] : {std::pair{40.0, 0.04}, {15.0, -0.02}, {30.0, 0.03}}) {
+    corners.push_back({opening * u, slip, 0});
+    corners.push_back({0, slip, 0});
+    corners.push_back({0, next_slip, 0});
+    slip = next_slip;
+  }
+  return straight_legs(corners);
+}
+
+// Shear reversing while the joint opens and softens on the tension cap: the
+// slip zig-zags with an amplitude of a tenth of the opening reached, eight
+// legs up to 6 softening lengths. The first four legs soften on the cap
+// (sigma_n from ft0 down to 0.02 MPa, normal damage to 0.996); in the last
+// four the normal damage is complete and the shear works down the cohesion
+// left at sigma_n = 0, short of separation. Every reversal is a slip against
+// the elastic slip, which unloads on the shear secant (model.md 6, Decision --
+// open-regime branches), and the traction crosses tau = 0 near the apex.
+std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
+  const double u = p.GIC / p.ft0;
+  constexpr int kLegs = 8;
+  std::vector<Vec3> corners;
+  for (int k = 1; k <= kLegs; ++k) {
+    const double opening = 6.0 * u * k / kLegs;
+    corners.push_back({opening, (k % 2 ? 0.1 : -0.1) * opening, 0});
+  }
+  return straight_legs(corners);
+}
+
 void add_mixed_paths(const std::string& data_dir, std::vector<BenchPath>& paths) {
   const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
   // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
@@ -171,6 +212,9 @@ void add_mixed_paths(const std::string& data_dir, std::vector<BenchPath>& paths)
                                   {0.05, 0, 0},
                                   {-0.002, 0, 0},
                                   {-0.002, 0.03, 0}})});
+  paths.push_back({"rocking", "rocking toe: separated, closed, slid, reopened, three times", p, 3, rocking_legs(p)});
+  paths.push_back({"cap_reversal", "opening and softening on the tension cap with slip reversals", p, 3,
+                   cap_reversal_legs(p)});
 }
 
 }  // namespace

@@ -138,7 +138,7 @@ TEST_CASE("the quick run wrote every file, and each is well formed", "[bench]") 
     paths.insert(r.path);
     labels.insert(r.scheme + std::to_string(r.stol));
   }
-  // 9 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
+  // 11 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
   // 5 STOLs, implicit), 3 h.
   const size_t n_paths = MJ_BENCH_QUICK_PATH_COUNT;
   CHECK(paths.size() == n_paths);
@@ -248,6 +248,14 @@ TEST_CASE("the accurate outcomes are where they must be", "[bench]") {
       CHECK(find(all, path, "modified-euler", 1e-5, h).outcome == "accurate");
     }
   }
+  // The default on every path the fixture ran, the mixed ones included
+  // (rocking, cap_reversal, softened_reopened, apex_jumps): the law's answer
+  // does not depend on how the path is cut (docs/model.md 6, 7.1).
+  for (const Run& r : all) {
+    if (r.scheme != "modified-euler" || r.stol != 1e-5) continue;
+    CAPTURE(r.path, r.h, r.error);
+    CHECK(r.outcome == "accurate");
+  }
   // The summary's line for the error 1e-4 on van der Pluijm -0.5 MPa: modified
   // Euler reaches it.
   const std::string summary = file_text("summary.md");
@@ -287,5 +295,54 @@ TEST_CASE("timing windows cover every increment once, in near-equal windows", "[
     for (int k = 0; k < w.points(); ++k) shortest = std::min(shortest, w.start[k + 1] - w.start[k]);
     CHECK(shortest >= 1);
     CHECK(w.length() - shortest <= 1);
+  }
+}
+
+namespace {
+
+// The traction the default scheme returns at the end of every leg of a bench
+// path, driven at h = 1e-4 mm.
+std::vector<Vec3> corner_tractions(const std::string& id) {
+  const std::vector<BenchPath> all = bench_paths(MJ_CALIBRATION_DATA_DIR, true);
+  const auto path = std::find_if(all.begin(), all.end(), [&](const BenchPath& p) { return p.id == id; });
+  REQUIRE(path != all.end());
+  const std::vector<Vec3> history = discretise(*path, 1e-4);
+  const Trajectory t = drive_point(path->parameters, path->directions, SchemeControls{}, history, 1, 60, false);
+  REQUIRE(t.complete(static_cast<long>(history.size()) - 1));
+  std::vector<Vec3> corners;
+  size_t i = 0;
+  for (const auto& leg : path->legs) {
+    while (history[i] != leg.back()) ++i;
+    corners.push_back(t.traction[i]);
+  }
+  return corners;
+}
+
+}  // namespace
+
+TEST_CASE("rocking: three times separated, closed into compression and slid", "[bench]") {
+  // Legs: open, close, slide; three times (bench/paths.cpp).
+  const std::vector<Vec3> c = corner_tractions("rocking");
+  REQUIRE(c.size() == 9);
+  for (int k = 0; k < 3; ++k) {
+    CAPTURE(k, c[3 * k].transpose(), c[3 * k + 1].transpose(), c[3 * k + 2].transpose());
+    CHECK(c[3 * k].norm() == 0);  // opened past complete separation: no traction at all
+    CHECK(c[3 * k + 1][0] < -2);  // closed: about 2.4 MPa of compression
+    CHECK(c[3 * k + 2][0] < -2);
+    CHECK(std::abs(c[3 * k + 2][1]) > 1);  // sliding on the friction left
+  }
+  CHECK(c[2][1] > 0);  // slips alternating in sign
+  CHECK(c[5][1] < 0);
+  CHECK(c[8][1] > 0);
+}
+
+TEST_CASE("cap_reversal: the shear reverses at every corner, on the tension cap, short of separation", "[bench]") {
+  const std::vector<Vec3> c = corner_tractions("cap_reversal");
+  REQUIRE(c.size() == 8);
+  for (size_t k = 0; k < c.size(); ++k) {
+    CAPTURE(k, c[k].transpose());
+    CHECK(c[k][0] >= 0);                          // open
+    CHECK(c[k][1] * (k % 2 ? -1 : 1) > 0.01);     // tau follows the slip's sign, strength left
+    if (k < 4) CHECK(c[k][0] > 0.01);             // the first four on the cap
   }
 }
