@@ -32,20 +32,26 @@ inline std::vector<Cell> all_cells(double h) {
   return v;
 }
 
-// The subset of sets a family runs at the finer increments: two of Table 1
-// and one random set at 1e-4 mm, one of each at 1e-5 mm, chosen so that the
-// sets with short softening lengths (cheap paths) and the ones with long ones
-// both appear.
+// The subset of sets a family runs at the finer increments: three at
+// 1e-4 mm, two at 1e-5 mm, Table 1 and random ones, sets with short and with
+// long softening lengths. Random paths with jumps run on sets that are
+// splitting-invariant at 1e-3 mm (test_splitting_jumps.cpp names the others).
 inline std::vector<Cell> fine_cells(const std::string& family, double h) {
-  std::vector<std::string> names;
-  const bool f4 = h >= 1e-4;
-  if (family == "separation") names = f4 ? std::vector<std::string>{"vdP-0.5", "M34", "rnd2"} : std::vector<std::string>{"M34", "rnd0"};
-  else if (family == "cap") names = f4 ? std::vector<std::string>{"vdP-0.1", "M15", "rnd1"} : std::vector<std::string>{"M34", "rnd2"};
-  else if (family == "open-shear-close") names = f4 ? std::vector<std::string>{"vdP-0.5", "Atk", "rnd1"} : std::vector<std::string>{"M15", "rnd0"};
-  else if (family == "slip3d") names = f4 ? std::vector<std::string>{"vdP-1.0", "M34", "rnd1"} : std::vector<std::string>{"vdP-0.1", "rnd2"};
-  else names = f4 ? std::vector<std::string>{"vdP-0.5", "M15", "rnd0"} : std::vector<std::string>{"Atk", "rnd1"};
+  struct Subset {
+    const char* family;
+    std::vector<std::string> at_1e4, at_1e5;
+  };
+  static const std::vector<Subset> subsets = {
+      {"separation", {"vdP-0.5", "M34", "rnd2"}, {"M34", "rnd0"}},
+      {"cap", {"vdP-0.1", "M15", "rnd1"}, {"M34", "rnd2"}},
+      {"open-shear-close", {"vdP-0.5", "Atk", "rnd1"}, {"M15", "rnd0"}},
+      {"slip3d", {"vdP-1.0", "M34", "rnd1"}, {"vdP-0.1", "rnd2"}},
+      {"random-jumps", {"vdP-1.0", "rnd0", "rnd1"}, {"vdP-1.0", "rnd1"}},
+  };
   std::vector<Cell> v;
-  for (const std::string& n : names) v.push_back({n, h, reach_at(h)});
+  for (const Subset& s : subsets)
+    if (family == s.family)
+      for (const std::string& n : h >= 1e-4 ? s.at_1e4 : s.at_1e5) v.push_back({n, h, reach_at(h)});
   return v;
 }
 
