@@ -13,7 +13,6 @@
 //                        [--all-sets]
 // Without --all-sets, h < 1e-3 runs the sets and shortened paths the tests
 // run there (fine_cells in splitting_cells.hpp).
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -67,14 +66,12 @@ std::string cell_text(double e, long failures) {
 }
 
 void row(const std::string& family, const NamedSet& ns, const Cell& c) {
-  const auto t0 = std::chrono::steady_clock::now();
   const Measured m = measure(family, ns, c);
-  const double sec = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const long tf = m.tight_failures + m.reference_failures;
-  std::printf("| %s | %s | %.0e | %zu | %s | %s | %s | %s | %.1f |\n", family.c_str(), ns.name.c_str(), c.h,
+  std::printf("| %s | %s | %.0e | %zu | %s | %s | %s | %s |\n", family.c_str(), ns.name.c_str(), c.h,
               m.increments, cell_text(m.tight_by_calls[0], tf).c_str(), cell_text(m.tight_by_calls[1], tf).c_str(),
               cell_text(m.defaults, m.default_failures + m.reference_failures).c_str(),
-              (m.tight <= 1e-6 && m.defaults <= 1e-3 && !m.any_failure()) ? "yes" : "**no**", sec);
+              (m.tight <= 1e-6 && m.defaults <= 1e-3 && !m.any_failure()) ? "yes" : "**no**");
   std::fflush(stdout);
 }
 
@@ -83,7 +80,7 @@ void row(const std::string& family, const NamedSet& ns, const Cell& c) {
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::printf("| family | set | h (mm) | increments | tight, 1 call | tight, 20 calls | default, 1 call "
-              "| within 1e-6 / 1e-3 | s |\n|---|---|---|---|---|---|---|---|---|\n");
+              "| within 1e-6 / 1e-3 |\n|---|---|---|---|---|---|---|---|\n");
   for (const std::string& family : families()) {
     if (!o.family.empty() && family != o.family) continue;
     for (double h : o.hs) {

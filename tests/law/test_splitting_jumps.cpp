@@ -9,16 +9,20 @@
 // Every one is a point that slides on the regime boundary (sigma_n = 0,
 // delta_e_n = 0) or crosses it while sliding: where and whether the switch
 // happens depends on the cut (docs/model.md 6, Regime switches).
-//   vdP-0.1  1e-3: tight 5.7e-4 / 5.7e-4, default 5.7e-4 (and 29 s to run)
-//   vdP-0.5  1e-3: tight 9.9e-6 (1 call); default 1.0e-4 is checked
-//   M15      1e-3: tight 2.8e-5 / 2.8e-5, default 1.5e-2 (closing while
-//                  sliding: the switch to closed, then the closure return)
-//   M34      1e-3: tight 4.8e-6 (1 call); default 3.8e-4 is checked
-//   Atk      1e-3: tight 7.4e-2 / 2.9e-3, default 7.4e-2 (1 call stays open
-//                  at sigma_n = 0 where the reference closes)
-//   rnd2     1e-3: tight 1.1e-1 / 3.7e-3, default 1.1e-1 (contact regained
-//                  on the reference, not with 1 call)
-//   vdP-1.0  1e-5: tight 1.1e-6 (1 call); 8.2e-7 (20), default 4.9e-5 checked
+//   vdP-0.1  1e-3: tight 5.7e-4 (1 call), 2.9e-4 (20), default 5.7e-4; and
+//                  30-60 s to run
+//   vdP-0.5  1e-3: tight 9.9e-6 (1 call); 20 calls and default (1.0e-4)
+//                  are checked
+//   M15      1e-3: tight 4.0e-6 (1), 2.8e-5 (20), default 1.5e-2 (closing
+//                  while sliding: the switch to closed and the closure return)
+//   M34      1e-3: tight 4.8e-6 (1 call); 20 calls and default (3.8e-4)
+//                  are checked
+//   Atk      1e-3: tight 7.4e-2 (1), 2.9e-3 (20), default 7.4e-2 (1 call
+//                  stays open at sigma_n = 0 where the reference closes)
+//   rnd2     1e-3: tight 1.1e-1 (1), 3.7e-3 (20), default 1.1e-1 (contact
+//                  regained on the reference, not with 1 call)
+//   vdP-1.0  1e-5: tight 1.1e-6 (1 call); 20 calls (8.2e-7) and default
+//                  (4.9e-5) are checked
 #include "splitting_check.hpp"
 
 using namespace mj_test::splitting;
