@@ -47,9 +47,9 @@ inline void check_cells(const std::string& family, const std::vector<Cell>& cell
     INFO(family << ", set " << c.set << ", h = " << c.h << " mm, " << m.increments << " increments");
     REQUIRE(m.peak > 0);
     CHECK(!m.any_failure());
-    if (t1) CHECK(m.tight_by_calls[0] <= 1e-6);  // tight, 1 call against 100
-    if (t20) CHECK(m.tight_by_calls[1] <= 1e-6); // tight, 20 calls against 100
-    if (d1) CHECK(m.default_by_calls[0] <= 1e-3); // default, 1 call against the tight reference
+    if (t1) CHECK(m.tight_by_calls[0] <= 1e-6);    // tight, 1 call against 100
+    if (t20) CHECK(m.tight_by_calls[1] <= 1e-6);   // tight, 20 calls against 100
+    if (d1) CHECK(m.default_by_calls[0] <= 1e-3);  // default, 1 call against the tight reference
   }
 }
 
