@@ -1,0 +1,209 @@
+// Splitting invariance (docs/model.md 6, Decision - complete separation at
+// s_sep; 7.1, Decisions - s relative, loading from the surface): the path
+// families, the parameter sets and the drive shared by the law's splitting
+// tests (tests/law/test_splitting*.cpp), the single-precision splitting test
+// (tests/abi/precision_splitting_tests.cpp) and the measurement program
+// (tests/law/splitting_table.cpp). No Catch2 here: the program links the law
+// only, and builds against older versions of it.
+//
+// A path is a list of legs in separation space (law signs: opening and the
+// two slips). A leg is cut into increments of about h, except a jump, which
+// is one increment whatever h (a solver's sudden large step). Each increment
+// is handed to integrate_increment as `calls` equal calls; the traction is
+// compared after each increment, relative to the path's peak traction.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "mortar/integrator.hpp"
+#include "paper_sets.hpp"
+#include "random_parameters.hpp"
+
+namespace mj_test::splitting {
+
+using mortar::Parameters;
+using mortar::Vec3;
+
+struct NamedSet {
+  std::string name;
+  Parameters p;
+};
+
+// Table 1's six sets, then three random valid ones (seed 11). Mode-I
+// snap-back (ft0^2/GIC > kn/2) is a different path, the return at fixed
+// separation (docs/model.md 6, Snap-back); a long softening length only makes
+// the paths longer.
+inline std::vector<NamedSet> sets() {
+  namespace t = mortar::testing;
+  std::vector<NamedSet> v = {{"vdP-0.1", t::van_der_pluijm(-0.1)}, {"vdP-0.5", t::van_der_pluijm(-0.5)},
+                             {"vdP-1.0", t::van_der_pluijm(-1.0)}, {"M15", t::almeida_m15()},
+                             {"M34", t::almeida_m34()},            {"Atk", t::atkinson()}};
+  std::mt19937 rng(11);
+  for (int k = 0; k < 3;) {
+    const Parameters p = random_parameters(rng);
+    if (p.ft0 * p.ft0 / p.GIC > 0.5 * p.kn || p.GIC / p.ft0 > 0.02) continue;
+    v.push_back({"rnd" + std::to_string(k++), p});
+  }
+  return v;
+}
+
+inline NamedSet set_named(const std::string& name) {
+  for (const NamedSet& s : sets())
+    if (s.name == name) return s;
+  return {"", Parameters{}};
+}
+
+struct Leg {
+  Vec3 to;            // the waypoint the leg ends at
+  bool jump = false;  // one increment, whatever h
+};
+using Path = std::vector<Leg>;
+
+inline const std::vector<std::string>& families() {
+  static const std::vector<std::string> f = {"separation", "cap", "open-shear-close", "slip3d", "random-jumps"};
+  return f;
+}
+
+// The joint's own lengths: elastic limits in tension and shear, softening
+// lengths in mode I and II.
+struct Lengths {
+  double e0, es, un, us;
+  explicit Lengths(const Parameters& p) : e0(p.ft0 / p.kn), es(p.c0 / p.ks), un(p.GIC / p.ft0), us(p.GIIC / p.c0) {}
+};
+
+// Random waypoints with jumps: each leg moves by a fraction of the softening
+// lengths, reverses (part of) the previous leg, or jumps by a few elastic
+// limits in one increment. The opening is kept above -4 e0 (a few ft0 of
+// pressure). Deterministic: the seed is the set's.
+inline Path random_jumps(const Parameters& p, unsigned seed, int legs) {
+  const Lengths L(p);
+  std::mt19937 rng(seed);
+  auto u = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  Path w;
+  Vec3 x = Vec3::Zero(), last = Vec3::Zero();
+  for (int k = 0; k < legs; ++k) {
+    const double r = u(0, 1);
+    Vec3 dx;
+    bool jump = false;
+    if (r < 0.3) {  // a jump of 2-5 elastic limits
+      Vec3 dir(u(-1, 1.2), u(-1, 1), u(-1, 1));
+      dir /= std::max(dir.norm(), 1e-3);
+      dx = u(2, 5) * Vec3(dir[0] * L.e0, dir[1] * L.es, dir[2] * L.es);
+      jump = true;
+    } else if (r < 0.5 && k > 0) {  // a reversal
+      dx = -u(0.3, 1.0) * last;
+    } else {
+      // A long softening length (Atkinson's us = 1.5 mm) only makes the
+      // path longer: a leg moves by at most 0.02 mm normal, 0.05 mm in slip.
+      const double un = std::min(L.un, 0.02), us = std::min(L.us, 0.05);
+      dx = Vec3(u(-0.5, 1.0) * un, u(-0.6, 0.6) * us, u(-0.6, 0.6) * us);
+    }
+    Vec3 next = x + dx;
+    next[0] = std::max(next[0], -4 * L.e0);
+    last = next - x;
+    x = next;
+    w.push_back({x, jump});
+  }
+  return w;
+}
+
+// The waypoints of a family for set p, seed the set's index. `reach` (<= 1)
+// shortens the long legs, which are multiples of the softening lengths, for
+// the finer increments; the features of a family (complete separation,
+// reversals, closure, direction changes) stay on the path.
+inline Path path_of(const std::string& family, const Parameters& p, unsigned seed, double reach = 1) {
+  const Lengths J(p);
+  const double u = J.un, e0 = J.e0;
+  Path w;
+  auto add = [&](std::initializer_list<Vec3> xs) {
+    for (const Vec3& x : xs) w.push_back({x});
+  };
+  if (family == "separation") {
+    // Open past complete separation (s_sep = 1e-7 at about 16 u), press shut
+    // to about 3 ft0, slide, reopen, press shut, slide back past zero, reopen.
+    const double L = std::min(std::max(30 * reach, 18.0) * u, 0.3) + e0, Lt = reach * std::min(4 * u, 0.05);
+    const double dc = L / (1 + p.bn) - 3 * e0;
+    add({Vec3(L, 0, 0), Vec3(dc, 0, 0), Vec3(dc, Lt, 0), Vec3(1.5 * L, Lt, 0), Vec3(dc, Lt, 0), Vec3(dc, -Lt, 0),
+         Vec3(2 * L, -Lt, 0)});
+  } else if (family == "cap") {
+    // Opening while softening on the tension cap, the slip reversing at
+    // every waypoint.
+    const double Lo = reach * std::min(6 * u, 0.1), A = Lo / 16;
+    for (int k = 1; k <= 8; ++k) w.push_back({Vec3(e0 + Lo * k / 8, k % 2 ? A : -A, 0)});
+  } else if (family == "open-shear-close") {
+    const double L = reach * std::min(2 * u, 0.04);
+    add({Vec3(L, 0, 0), Vec3(L, L, 0), Vec3(-2 * e0, L, 0), Vec3(-2 * e0, 2 * L, 0)});
+  } else if (family == "slip3d") {
+    // Under compression (sigma_n about -ft0), the slip turning by 90 degrees
+    // and reversing.
+    const double dc = -e0, L = reach * std::min(4 * J.us, 0.1);
+    add({Vec3(dc, 0, 0), Vec3(dc, L, 0), Vec3(dc, L, L), Vec3(dc, 0, L), Vec3(dc, 0.5 * L, -0.5 * L), Vec3(dc, -L, 0)});
+  } else {
+    // Fewer legs at a shorter reach: the first legs of the same path.
+    w = random_jumps(p, 1000 + seed, 12);
+    if (reach < 1) w.resize(std::max<size_t>(4, size_t(std::lround(12 * reach))));
+  }
+  return w;
+}
+
+// The tractions after each increment, and the calls that failed.
+struct Run {
+  std::vector<Vec3> traction;
+  long failures = 0;
+  long calls = 0;
+};
+
+// Each leg cut into increments of about h (a jump: one), each increment
+// into `calls` equal calls.
+inline Run drive(const mortar::Model& M, const Path& w, double h, int calls) {
+  Run out;
+  mortar::State s;
+  Vec3 from = Vec3::Zero();
+  for (const Leg& leg : w) {
+    const Vec3 d = leg.to - from;
+    from = leg.to;
+    const int n = leg.jump ? 1 : std::max(1, int(std::ceil(d.norm() / h - 1e-9)));
+    for (int i = 0; i < n; ++i) {
+      mortar::IncrementResult r;
+      for (int c = 0; c < calls; ++c) {
+        r = mortar::integrate_increment(M, s, d / n / calls);
+        out.failures += !r.status.ok();
+        ++out.calls;
+      }
+      out.traction.push_back(r.traction);
+    }
+  }
+  return out;
+}
+
+inline double peak(const std::vector<Vec3>& t) {
+  double p = 0;
+  for (const Vec3& x : t) p = std::max(p, x.norm());
+  return p;
+}
+
+// max over increments |a - b| / peak (Euclidean norm of the traction).
+inline double worst(const std::vector<Vec3>& a, const std::vector<Vec3>& b, double pk) {
+  if (a.size() != b.size()) return INFINITY;
+  double e = 0;
+  for (size_t i = 0; i < a.size(); ++i) e = std::max(e, (a[i] - b[i]).norm() / pk);
+  return e;
+}
+
+// The tight controls of requirement (a): STOL 1e-9, FTOL 1e-12, the rest at
+// their defaults (docs/model.md 7.4).
+inline mortar::Controls tight() {
+  mortar::Controls c;
+  c.stol = 1e-9;
+  c.ftol = 1e-12;
+  return c;
+}
+
+// The calls per increment of the tight reference: never the candidate's cut.
+inline constexpr int kReferenceCalls = 100;
+
+}  // namespace mj_test::splitting
