@@ -106,6 +106,8 @@ int main(int argc, char** argv) {
   scene_cmd->add_option("--threads", scene.threads, "Threads calling vuinteraction_ (blocks are independent)")
       ->capture_default_str();
   scene_cmd->add_option("--block", scene.block, "Points per call (nBlock), at most 136")->capture_default_str();
+  bool scene_no_plots = false;
+  scene_cmd->add_flag("--no-plots", scene_no_plots, "Skip the charts");
   scene_cmd->add_flag("--quiet,-q", scene.quiet, "No progress on stderr");
 
   try {
@@ -121,6 +123,7 @@ int main(int argc, char** argv) {
       run.max_cuts_given = run_cmd->count("--max-cuts") > 0;
       return run_command(run, std::cerr);
     }
+    scene.plots = !scene_no_plots;
     if (*scene_cmd) return scene_command(scene, std::cout, std::cerr);
     if (*inp_cmd) return inp_command(inp, std::cout);
     if (*bench_cmd) {

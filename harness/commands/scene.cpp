@@ -7,8 +7,10 @@
 
 #include "input/input_error.hpp"
 #include "input/scene_file.hpp"
+#include "output/plots.hpp"
 #include "output/progress.hpp"
 #include "output/scene_csv.hpp"
+#include "output/scene_plots.hpp"
 #include "scenes/wall.hpp"
 #include "solvers/block_solver.hpp"
 
@@ -73,7 +75,20 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   }
   out << summary << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv ("
       << snaps.size() << " snapshots, displacements x " << mag << ")\n";
-  (void)err;
+  if (!args.plots) return 0;
+  std::vector<std::string> labels;
+  for (const WallSnapshot& s : snaps) labels.push_back(s.label);
+  const std::string script = write_scene_plot_script(args.out, labels, mag);
+  if (!gnuplot_available()) {
+    err << "scene: gnuplot is not on the PATH: wrote " << script << " only\n";
+    return 0;
+  }
+  std::string message;
+  if (!run_gnuplot(args.out, script, message)) {
+    err << "scene: gnuplot failed on " << script << ":\n" << message;
+    return 1;
+  }
+  out << "scene: drew base_shear, energy and wall_0.." << snaps.size() - 1 << " (.png, .svg) with " << script << "\n";
   return 0;
 }
 
