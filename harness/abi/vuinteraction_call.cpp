@@ -63,6 +63,17 @@ void AbiBlock::set_separation_increment(int k, double opening_end, const Eigen::
   for (int i = 1; i < setup_.n_dir; ++i) dr[i] = abi_signs::kSlipSign * d[i];
 }
 
+void AbiBlock::set_joint_point(int k, double area, const double normal[2], const double tangent[2],
+                               const double x[2]) {
+  const int nd = setup_.n_dir;  // 2: the caller checks
+  area_slv_[k] = area;
+  double* d = &dircos_[static_cast<size_t>(k) * nd * nd];
+  d[0] = normal[0], d[1] = normal[1];    // dircos(:,1,k)
+  d[2] = tangent[0], d[3] = tangent[1];  // dircos(:,2,k)
+  dircos_sl_[k * nd] = normal[0], dircos_sl_[k * nd + 1] = normal[1];
+  coord_slv_[k * nd] = x[0], coord_slv_[k * nd + 1] = x[1];
+}
+
 Eigen::Vector3d AbiBlock::traction(int k) const {
   const double* s = stress(k);
   Eigen::Vector3d t(abi_signs::normal_traction_from_stress(s[0]), 0.0, 0.0);

@@ -40,6 +40,7 @@ class AbiBlock {
   const double* stress(int k) const { return &stress_[index(k, setup_.n_dir)]; }
   const double* state(int k) const { return &state_[index(k, setup_.n_states)]; }
   double& sed(int k) { return sed_[k]; }
+  double sed(int k) const { return sed_[k]; }
   std::vector<double>& stress_array() { return stress_; }
   std::vector<double>& state_array() { return state_; }
   std::vector<double>& sed_array() { return sed_; }
@@ -55,6 +56,12 @@ class AbiBlock {
   // Point k's kinematic inputs from law quantities (abi/vuinteraction_signs.hpp):
   // the opening at the end of the increment and the separation increment.
   void set_separation_increment(int k, double opening_end, const Eigen::Vector3d& d);
+  // Point k's place in a scene of many joints (the wall, scenes/wall.hpp):
+  // its tributary area (areaSlv), its local frame as Abaqus gives it in
+  // dircos (column 1 the normal, column 2 the tangent, global components; the
+  // adapter does not read it in 2D, but a caller must hand what Abaqus
+  // would), and its coordinates. nDir = 2 only.
+  void set_joint_point(int k, double area, const double normal[2], const double tangent[2], const double x[2]);
   // Point k's traction after a call, law signs (zero beyond nDir).
   Eigen::Vector3d traction(int k) const;
 

@@ -2,7 +2,7 @@
 // interface points only through the ABI entry points, vuinteraction_
 // (Abaqus/Explicit) and uinter_ (Abaqus/Standard), as Abaqus would. This file
 // declares the command line; each subcommand is its own file in commands/:
-// run, validate, inp, bench (harness/README.md).
+// run, validate, inp, bench, scene (harness/README.md).
 #include <iostream>
 #include <string>
 #include <vector>
@@ -12,6 +12,7 @@
 #include "commands/bench.hpp"
 #include "commands/inp.hpp"
 #include "commands/run.hpp"
+#include "commands/scene.hpp"
 #include "commands/validate.hpp"
 #include "input/input_error.hpp"
 
@@ -97,6 +98,18 @@ int main(int argc, char** argv) {
   bench_cmd->add_flag("--no-plots", bench_no_plots, "Skip the charts");
   bench_cmd->add_flag("--quiet,-q", bench.quiet, "No progress on stderr");
 
+  SceneArgs scene;
+  CLI::App* scene_cmd = app.add_subcommand("scene", "A wall of rigid blocks through vuinteraction_ (explicit dynamics)");
+  scene_cmd->add_option("file", scene.file, "Scene file (TOML)")->required();
+  scene_cmd->add_option("--out", scene.out, "Folder for the history, snapshots, charts and summary")
+      ->capture_default_str();
+  scene_cmd->add_option("--threads", scene.threads, "Threads calling vuinteraction_ (blocks are independent)")
+      ->capture_default_str();
+  scene_cmd->add_option("--block", scene.block, "Points per call (nBlock), at most 136")->capture_default_str();
+  bool scene_no_plots = false;
+  scene_cmd->add_flag("--no-plots", scene_no_plots, "Skip the charts");
+  scene_cmd->add_flag("--quiet,-q", scene.quiet, "No progress on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -110,6 +123,8 @@ int main(int argc, char** argv) {
       run.max_cuts_given = run_cmd->count("--max-cuts") > 0;
       return run_command(run, std::cerr);
     }
+    scene.plots = !scene_no_plots;
+    if (*scene_cmd) return scene_command(scene, std::cout, std::cerr);
     if (*inp_cmd) return inp_command(inp, std::cout);
     if (*bench_cmd) {
       bench.plots = !bench_no_plots;

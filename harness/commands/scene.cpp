@@ -1,0 +1,95 @@
+#include "commands/scene.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+
+#include "input/input_error.hpp"
+#include "input/scene_file.hpp"
+#include "output/plots.hpp"
+#include "output/progress.hpp"
+#include "output/scene_csv.hpp"
+#include "output/scene_plots.hpp"
+#include "scenes/wall.hpp"
+#include "solvers/block_solver.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+void check_args(const SceneArgs& a) {
+  if (a.threads < 1 || a.threads > 256)
+    throw InputError("--threads " + std::to_string(a.threads) + " violates the rule: 1 <= threads <= 256");
+  if (a.block < 1 || a.block > 136)
+    throw InputError("--block " + std::to_string(a.block) +
+                     " violates the rule: 1 <= block <= 136 (Abaqus/Explicit's largest nBlock)");
+  namespace fs = std::filesystem;
+  if (fs::exists(a.out) && !fs::is_directory(a.out))
+    throw InputError("--out " + a.out + ": exists and is not a directory");
+  fs::create_directories(a.out);
+}
+
+// Magnification of the pictures: the largest body displacement drawn as a
+// twentieth of the wall's height, unless the scene file says.
+double magnification(const SceneSpec& spec, const WallModel& m, const std::vector<WallSnapshot>& snaps) {
+  if (spec.output.magnification > 0) return spec.output.magnification;
+  double umax = 0;
+  for (const WallSnapshot& s : snaps)
+    for (size_t b = 0; b + 1 < m.bodies.size(); ++b)  // the beam carries the imposed displacement
+      umax = std::max({umax, std::abs(s.q[3 * b]), std::abs(s.q[3 * b + 1])});
+  return umax > 0 ? 0.05 * m.height / umax : 1.0;
+}
+
+}  // namespace
+
+int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
+  check_args(args);
+  const SceneSpec spec = read_scene_file(args.file);
+  const WallModel model = build_wall(spec.wall);
+  BlockSolverOptions options;
+  options.block = args.block;
+  options.threads = args.threads;
+  BlockSolver solver(spec, model, options);
+  const long total = solver.total_increments();
+  const int every = spec.output.every > 0 ? spec.output.every : static_cast<int>(std::max(1L, total / 2000));
+  HistoryCsv history(args.out + "/history.csv");
+  WallSample last;
+  std::vector<WallSnapshot> snaps;
+  Progress progress("scene: " + std::to_string(total) + " increments", args.quiet);
+  const WallRunSummary r = solver.run(
+      every,
+      [&](const WallSample& s) {
+        history.row(s);
+        last = s;
+      },
+      [&](long done, long all) { progress.update(done, all); }, &snaps);
+  progress.finish();
+  const double mag = magnification(spec, model, snaps);
+  for (size_t k = 0; k < snaps.size(); ++k) write_snapshot_csv(args.out, static_cast<int>(k), model, snaps[k], mag);
+  const std::string summary = scene_summary(spec, model, r, last);
+  {
+    std::ofstream f(args.out + "/summary.txt");
+    if (!f) throw InputError(args.out + "/summary.txt: cannot open the file for writing");
+    f << summary;
+  }
+  out << summary << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv ("
+      << snaps.size() << " snapshots, displacements x " << mag << ")\n";
+  if (!args.plots) return 0;
+  std::vector<std::string> labels;
+  for (const WallSnapshot& s : snaps) labels.push_back(s.label);
+  const std::string script = write_scene_plot_script(args.out, labels, mag);
+  if (!gnuplot_available()) {
+    err << "scene: gnuplot is not on the PATH: wrote " << script << " only\n";
+    return 0;
+  }
+  std::string message;
+  if (!run_gnuplot(args.out, script, message)) {
+    err << "scene: gnuplot failed on " << script << ":\n" << message;
+    return 1;
+  }
+  out << "scene: drew base_shear, energy and wall_0.." << snaps.size() - 1 << " (.png, .svg) with " << script << "\n";
+  return 0;
+}
+
+}  // namespace mortar::harness

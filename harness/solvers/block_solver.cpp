@@ -1,0 +1,241 @@
+#include "solvers/block_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "abi/props.hpp"
+#include "mortar/state.hpp"
+#include "solvers/joint_calls.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A half-cosine step from 0 to 1 over [0, 1]: zero velocity at both ends.
+double smooth_step(double x) { return x <= 0 ? 0 : x >= 1 ? 1 : 0.5 * (1 - std::cos(kPi * x)); }
+
+enum Dof { kFixed = 0, kFree = 1, kPrescribed = 2 };
+
+}  // namespace
+
+double gravity_factor_at(const SceneSpec& s, double t) { return smooth_step(t / s.loading.self_weight_time); }
+
+double precompression_factor_at(const SceneSpec& s, double t) {
+  return smooth_step((t - s.loading.self_weight_time) / s.loading.precompression_time);
+}
+
+double top_displacement_at(const SceneSpec& s, double t) {
+  const std::vector<double> ends = s.stage_ends();
+  double start = ends[2], prev = 0;
+  for (size_t k = 0; k < s.loading.displacement.size(); ++k) {
+    const double d = s.loading.displacement[k], end = ends[3 + k];
+    if (t < end) return prev + (d - prev) * smooth_step((t - start) / (end - start));
+    start = end, prev = d;
+  }
+  return prev;
+}
+
+BlockSolver::BlockSolver(const SceneSpec& scene, const WallModel& model, const BlockSolverOptions& options)
+    : scene_(scene), model_(model), options_(options) {
+  const int nb = static_cast<int>(model.bodies.size());
+  mass_.assign(3 * nb, 0.0);
+  free_.assign(3 * nb, kFree);
+  const double f = scene.solver.mass_scaling;
+  for (int b = 0; b < nb; ++b) {
+    const Body& body = model.bodies[b];
+    mass_[3 * b] = mass_[3 * b + 1] = f * body.mass;
+    mass_[3 * b + 2] = f * body.inertia;
+  }
+  for (int i = 0; i < 3; ++i) free_[3 * model.base() + i] = kFixed;
+  free_[3 * model.beam()] = kPrescribed;
+  if (scene.wall.beam_rotation == BeamRotation::fixed) free_[3 * model.beam() + 2] = kFixed;
+  for (size_t i = 0; i < mass_.size(); ++i)
+    if (free_[i] == kFree && !(mass_[i] > 0))
+      throw std::invalid_argument("BlockSolver: a free degree of freedom without mass (body " +
+                                  std::to_string(i / 3) + ")");
+  stable_dt_ = stable_increment_bound();
+  dt_ = scene.solver.safety_factor * stable_dt_;
+}
+
+// 2/ω_max with ω_max² ≤ max_i Σ_j |K_ij|/sqrt(m_i m_j) over the free
+// degrees of freedom (Gershgorin), K summed point by point in absolute
+// values (an upper bound again).
+double BlockSolver::stable_increment_bound() const {
+  const Parameters& p = scene_.joint.values;
+  std::vector<double> row(mass_.size(), 0.0);
+  for (const ContactPoint& c : model_.points) {
+    int dof[6];
+    double bn[6], bt[6];
+    const int bodies[2] = {c.a, c.b};
+    for (int side = 0; side < 2; ++side) {
+      const Body& body = model_.bodies[bodies[side]];
+      const double sign = side == 0 ? -1.0 : 1.0, rx = c.x - body.cx, ry = c.y - body.cy;
+      for (int i = 0; i < 3; ++i) dof[3 * side + i] = 3 * bodies[side] + i;
+      bn[3 * side] = sign * c.nx, bn[3 * side + 1] = sign * c.ny, bn[3 * side + 2] = sign * (rx * c.ny - ry * c.nx);
+      bt[3 * side] = sign * c.tx(), bt[3 * side + 1] = sign * c.ty();
+      bt[3 * side + 2] = sign * (rx * c.ty() - ry * c.tx());
+    }
+    for (int i = 0; i < 6; ++i) {
+      if (free_[dof[i]] != kFree) continue;
+      for (int j = 0; j < 6; ++j) {
+        if (free_[dof[j]] != kFree) continue;
+        const double k = c.area * (p.kn * std::fabs(bn[i] * bn[j]) + p.ks * std::fabs(bt[i] * bt[j]));
+        row[dof[i]] += k / std::sqrt(mass_[dof[i]] * mass_[dof[j]]);
+      }
+    }
+  }
+  const double omega2 = *std::max_element(row.begin(), row.end());
+  if (!(omega2 > 0)) throw std::invalid_argument("BlockSolver: no joint stiffness on any free degree of freedom");
+  return 2.0 / std::sqrt(omega2);
+}
+
+long BlockSolver::total_increments() const {
+  const long n = static_cast<long>(std::ceil(scene_.end_time() / dt_ - 1e-9));
+  return options_.max_increments > 0 ? std::min(n, options_.max_increments) : n;
+}
+
+namespace {
+
+// External forces at time t: the weights (real masses: mass scaling changes
+// inertia only) and the precompression on the beam.
+void external_forces(const SceneSpec& s, const WallModel& m, double t, std::vector<double>& f) {
+  std::fill(f.begin(), f.end(), 0.0);
+  const double g = s.loading.gravity * gravity_factor_at(s, t);
+  for (size_t b = 1; b < m.bodies.size(); ++b) f[3 * b + 1] = -m.bodies[b].mass * g;
+  const double p = s.loading.precompression * m.length * s.wall.unit_depth;
+  f[3 * m.beam() + 1] -= p * precompression_factor_at(s, t);
+}
+
+int stage_at(const std::vector<double>& ends, double t) {
+  for (size_t k = 0; k < ends.size(); ++k)
+    if (t < ends[k]) return static_cast<int>(k);
+  return static_cast<int>(ends.size()) - 1;
+}
+
+WallSnapshot snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label) {
+  WallSnapshot s;
+  s.time = t, s.label = label, s.q = q;
+  for (int i = 0; i < joints.points(); ++i) {
+    s.damage.push_back(std::max(joints.state(i, slot::damage_n), joints.state(i, slot::damage_s)));
+    s.opening.push_back(joints.opening(i));
+  }
+  return s;
+}
+
+}  // namespace
+
+WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSample&)>& sample,
+                                const std::function<void(long, long)>& progress,
+                                std::vector<WallSnapshot>* snapshots) {
+  const auto clock_start = std::chrono::steady_clock::now();
+  AbiSetup setup;
+  setup.n_dir = 2;
+  setup.n_states = kStateCount;
+  setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol);
+  setup.stiffness_default = scene_.joint.values.kn;
+  JointCalls joints(model_, setup, options_.block, options_.threads);
+
+  const std::vector<double> ends = scene_.stage_ends();
+  const std::vector<int> base = model_.base_points();
+  const long n_end = total_increments();
+  const int nd = static_cast<int>(mass_.size()), ux_beam = 3 * model_.beam();
+  const double dt = dt_, c = 0.5 * scene_.solver.mass_damping * dt;
+  std::vector<double> q(nd, 0.0), v(nd, 0.0), v_prev(nd, 0.0), f_int(nd, 0.0), f_ext(nd, 0.0), f_next(nd, 0.0);
+  std::vector<double> snapshot_times = scene_.output.snapshot_times;
+  std::sort(snapshot_times.begin(), snapshot_times.end());
+  size_t next_snapshot = 0;
+  WallSnapshot peak_snapshot;
+
+  CallTime time;
+  joints.reference(time);
+  WallRunSummary sum;
+  sum.stable_increment = stable_dt_, sum.time_increment = dt_, sum.points = joints.points();
+  sum.blocks = sum.calls_per_increment = joints.blocks();
+  double work_loads = 0, work_actuator = 0, damping = 0, reaction_prev = 0, u_prev = 0, external_max = 0;
+  external_forces(scene_, model_, 0.0, f_ext);
+
+  for (long n = 0;; ++n) {
+    const double t = n * dt;
+    const bool last = n == n_end;
+    // Velocities to n+1/2 (not past the end: the last sample uses v(n-1/2)).
+    v_prev = v;
+    if (!last) {
+      for (int i = 0; i < nd; ++i)
+        if (free_[i] == kFree) v[i] = ((1 - c) * v[i] + dt * (f_ext[i] + f_int[i]) / mass_[i]) / (1 + c);
+      v[ux_beam] = (top_displacement_at(scene_, t + dt) - top_displacement_at(scene_, t)) / dt;
+    }
+    // The actuator's force at n: what the beam's prescribed motion needs.
+    const double reaction =
+        last ? -f_int[ux_beam] : mass_[ux_beam] * (v[ux_beam] - v_prev[ux_beam]) / dt - f_int[ux_beam];
+    if (n > 0) work_actuator += 0.5 * (reaction_prev + reaction) * (q[ux_beam] - u_prev);
+    reaction_prev = reaction, u_prev = q[ux_beam];
+
+    WallSample s;
+    s.increment = n, s.time = t, s.stage = stage_at(ends, t);
+    s.top_ux = q[ux_beam], s.top_uy = q[ux_beam + 1], s.top_rotation = q[ux_beam + 2];
+    s.actuator = reaction;
+    for (int i : base) {
+      s.base_shear += joints.tau(i) * model_.points[i].area;
+      s.base_normal += joints.sigma(i) * model_.points[i].area;
+    }
+    WallEnergies& e = s.energy;
+    e.external = work_loads + work_actuator;
+    e.elastic = joints.elastic_energy();
+    e.dissipated = joints.dissipated();
+    e.plastic = joints.state_sum(slot::dissipation_plastic);
+    e.damage = joints.state_sum(slot::dissipation_damage);
+    e.unilateral = joints.state_sum(slot::energy_unilateral);
+    for (int i = 0; i < nd; ++i)
+      if (free_[i] != kFixed) e.kinetic += 0.125 * mass_[i] * (v[i] + v_prev[i]) * (v[i] + v_prev[i]);
+    e.damping = damping;
+    external_max = std::max(external_max, std::fabs(e.external));
+    // Measured from the displacement stage on: before it the energies are
+    // tiny and their ratio is noise.
+    if (s.stage >= 3 && external_max > 0) sum.max_balance_error = std::max(sum.max_balance_error, std::fabs(e.balance()) / external_max);
+    if (s.stage >= 3) {
+      if (std::fabs(s.base_shear) > std::fabs(sum.peak_shear)) {
+        sum.peak_shear = s.base_shear, sum.peak_displacement = s.top_ux, sum.peak_time = t;
+        if (snapshots) peak_snapshot = snapshot(joints, q, t, "peak");
+      }
+      if (e.internal() > 0) sum.max_kinetic_ratio = std::max(sum.max_kinetic_ratio, e.kinetic / e.internal());
+    }
+    if (snapshots)
+      while (next_snapshot < snapshot_times.size() && snapshot_times[next_snapshot] <= t + 0.5 * dt)
+        snapshots->push_back(snapshot(joints, q, t, "t = " + std::to_string(snapshot_times[next_snapshot++]) + " s"));
+    if (sample && (last || (every > 0 && n % every == 0))) sample(s);
+    if (progress && n % 256 == 0) progress(n, n_end);
+    if (last) break;
+
+    // Positions to n+1, the work of the loads and of the damping over the step.
+    external_forces(scene_, model_, t + dt, f_next);
+    for (int i = 0; i < nd; ++i) {
+      if (free_[i] != kFree) continue;
+      const double dq = dt * v[i];
+      work_loads += 0.5 * (f_ext[i] + f_next[i]) * dq;
+      damping += 2 * c / dt * mass_[i] * v[i] * dq;
+      q[i] += dq;
+    }
+    q[ux_beam] = top_displacement_at(scene_, t + dt);
+    f_ext.swap(f_next);
+    time.increment = static_cast<int>(n + 1);
+    time.step_time = time.total_time = t + dt;
+    time.time_increment = dt;
+    joints.update(q, time);
+    std::fill(f_int.begin(), f_int.end(), 0.0);
+    joints.add_forces(f_int);
+  }
+  if (snapshots) {
+    if (!peak_snapshot.q.empty()) snapshots->push_back(peak_snapshot);
+    snapshots->push_back(snapshot(joints, q, n_end * dt, "end"));
+  }
+  sum.increments = n_end;
+  sum.seconds_in_routine = joints.seconds_in_routine();
+  sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
+  return sum;
+}
+
+}  // namespace mortar::harness

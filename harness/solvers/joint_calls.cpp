@@ -1,0 +1,140 @@
+#include "solvers/joint_calls.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "abi/status.hpp"
+#include "mortar/state.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+// Displacement of the material point (x, y) of body b under q (small rotation).
+void point_displacement(const Body& b, const double* q, double x, double y, double& ux, double& uy) {
+  ux = q[0] - q[2] * (y - b.cy);
+  uy = q[1] + q[2] * (x - b.cx);
+}
+
+}  // namespace
+
+JointCalls::JointCalls(const WallModel& model, const AbiSetup& setup, int block, int threads)
+    : model_(model), block_size_(block), threads_(std::max(1, threads)) {
+  if (setup.n_dir != 2) throw std::invalid_argument("JointCalls: an in-plane wall has nDir = 2");
+  const int n = static_cast<int>(model.points.size());
+  for (int first = 0; first < n; first += block) {
+    blocks_.emplace_back(setup, std::min(block, n - first), first);
+    AbiBlock& b = blocks_.back();
+    for (int k = 0; k < b.size(); ++k) {
+      const ContactPoint& p = model.points[first + k];
+      const double normal[2] = {p.nx, p.ny}, tangent[2] = {p.tx(), p.ty()}, x[2] = {p.x, p.y};
+      b.set_joint_point(k, p.area, normal, tangent, x);
+    }
+  }
+  opening_.assign(n, 0.0);
+  slip_.assign(n, 0.0);
+  sigma_.assign(n, 0.0);
+  tau_.assign(n, 0.0);
+}
+
+double JointCalls::state(int i, int slot) const {
+  return blocks_[i / block_size_].state(i % block_size_)[slot];
+}
+
+void JointCalls::reference(const CallTime& time) {
+  for (AbiBlock& b : blocks_)
+    for (int k = 0; k < b.size(); ++k) b.set_separation_increment(k, 0.0, Eigen::Vector3d::Zero());
+  call_all(time);
+}
+
+void JointCalls::update(const std::vector<double>& q, const CallTime& time) {
+  for (size_t i = 0; i < model_.points.size(); ++i) {
+    const ContactPoint& p = model_.points[i];
+    double ax, ay, bx, by;
+    point_displacement(model_.bodies[p.a], &q[3 * p.a], p.x, p.y, ax, ay);
+    point_displacement(model_.bodies[p.b], &q[3 * p.b], p.x, p.y, bx, by);
+    const double dx = bx - ax, dy = by - ay;
+    const double opening = dx * p.nx + dy * p.ny, slip = dx * p.tx() + dy * p.ty();
+    const Eigen::Vector3d d(opening - opening_[i], slip - slip_[i], 0.0);
+    blocks_[i / block_size_].set_separation_increment(static_cast<int>(i % block_size_), opening, d);
+    opening_[i] = opening;
+    slip_[i] = slip;
+  }
+  call_all(time);
+}
+
+void JointCalls::call_all(const CallTime& time) {
+  const auto start = std::chrono::steady_clock::now();
+  const int nb = blocks(), nt = std::min(threads_, nb);
+  // Thread t calls blocks t, t + nt, ...: each block is touched by one thread.
+  auto work = [&](int t) {
+    for (int j = t; j < nb; j += nt) blocks_[j].invoke(time);
+  };
+  if (nt <= 1) {
+    work(0);
+  } else {
+    std::vector<std::thread> pool;
+    for (int t = 1; t < nt; ++t) pool.emplace_back(work, t);
+    work(0);
+    for (auto& th : pool) th.join();
+  }
+  seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  check_status(time);
+  // Tractions and energies in point order: the sums do not depend on blocks.
+  for (size_t i = 0; i < model_.points.size(); ++i) {
+    const AbiBlock& b = blocks_[i / block_size_];
+    const int k = static_cast<int>(i % block_size_);
+    const Eigen::Vector3d t = b.traction(k);
+    sigma_[i] = t[0];
+    tau_[i] = t[1];
+    dissipated_ += (b.spd(k) + b.sfd(k)) * model_.points[i].area;
+  }
+}
+
+void JointCalls::check_status(const CallTime& time) const {
+  for (size_t i = 0; i < model_.points.size(); ++i) {
+    const double status = state(static_cast<int>(i), slot::status);
+    if (status == 0) continue;
+    const ContactPoint& p = model_.points[i];
+    std::ostringstream m;
+    m << "contact point " << i + 1 << " (" << (p.bed ? "bed" : "head") << " joint at x = " << p.x << ", y = " << p.y
+      << " mm), increment " << time.increment << ": vuinteraction_ returned status " << status << " ("
+      << status_meaning(status) << ")";
+    throw std::runtime_error(m.str());
+  }
+}
+
+void JointCalls::add_forces(std::vector<double>& f) const {
+  for (size_t i = 0; i < model_.points.size(); ++i) {
+    const ContactPoint& p = model_.points[i];
+    // Traction on body b (law signs: tension pulls b back towards a).
+    const double fx = -(sigma_[i] * p.nx + tau_[i] * p.tx()) * p.area;
+    const double fy = -(sigma_[i] * p.ny + tau_[i] * p.ty()) * p.area;
+    const Body& a = model_.bodies[p.a];
+    const Body& b = model_.bodies[p.b];
+    f[3 * p.b] += fx, f[3 * p.b + 1] += fy;
+    f[3 * p.b + 2] += (p.x - b.cx) * fy - (p.y - b.cy) * fx;
+    f[3 * p.a] -= fx, f[3 * p.a + 1] -= fy;
+    f[3 * p.a + 2] -= (p.x - a.cx) * fy - (p.y - a.cy) * fx;
+  }
+}
+
+double JointCalls::elastic_energy() const {
+  double e = 0;
+  for (size_t i = 0; i < model_.points.size(); ++i) {
+    const AbiBlock& b = blocks_[i / block_size_];
+    e += b.sed(static_cast<int>(i % block_size_)) * model_.points[i].area;
+  }
+  return e;
+}
+
+double JointCalls::state_sum(int slot) const {
+  double e = 0;
+  for (size_t i = 0; i < model_.points.size(); ++i) e += state(static_cast<int>(i), slot) * model_.points[i].area;
+  return e;
+}
+
+}  // namespace mortar::harness

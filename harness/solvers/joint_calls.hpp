@@ -1,0 +1,63 @@
+// The wall's contact points through vuinteraction_, as Abaqus/Explicit hands
+// them over: in blocks of at most `block` points (Abaqus's nBlock is at most
+// 136), every block its own argument arrays that persist from increment to
+// increment (stress, state and sed are owned by the caller and handed back),
+// the first call at zero penetration taken by the routine as the bonded
+// reference, then each point's penetration (minus its opening) and its slip
+// increment in the joint's local frame, its tributary area, its dircos and
+// stiffDflt = kn. Blocks are independent, so they may be called from several
+// threads; the results are assembled in point order afterwards, so they do
+// not depend on the block size or the number of threads.
+#pragma once
+
+#include <vector>
+
+#include "abi/vuinteraction_call.hpp"
+#include "scenes/wall.hpp"
+
+namespace mortar::harness {
+
+class JointCalls {
+ public:
+  JointCalls(const WallModel& model, const AbiSetup& setup, int block, int threads);
+
+  int points() const { return static_cast<int>(opening_.size()); }
+  int blocks() const { return static_cast<int>(blocks_.size()); }
+
+  // The reference call (increment 0, zero penetration and slip).
+  void reference(const CallTime& time);
+  // One increment to the body displacements q (3 per body: ux, uy, rotation).
+  // std::runtime_error naming the point when the routine reports a failure.
+  void update(const std::vector<double>& q, const CallTime& time);
+
+  // Adds the joints' forces and moments on the bodies to f (3 per body).
+  void add_forces(std::vector<double>& f) const;
+
+  // Point i after the last call (law signs: opening and tension positive).
+  double opening(int i) const { return opening_[i]; }
+  double slip(int i) const { return slip_[i]; }
+  double sigma(int i) const { return sigma_[i]; }
+  double tau(int i) const { return tau_[i]; }
+  double state(int i, int slot) const;  // SDV slot+1
+  // Sums over the points, times the tributary areas [N·mm]: sed, and the
+  // accumulated spd + sfd of every call so far.
+  double elastic_energy() const;
+  double dissipated() const { return dissipated_; }
+  // Σ SDV(slot+1)·area: the law's split of the dissipation (SDV 16, 17, 18).
+  double state_sum(int slot) const;
+  // Wall-clock seconds spent in the calls of vuinteraction_ (the parallel
+  // section, from the first block's start to the last block's end).
+  double seconds_in_routine() const { return seconds_; }
+
+ private:
+  void call_all(const CallTime& time);
+  void check_status(const CallTime& time) const;
+
+  const WallModel& model_;
+  std::vector<AbiBlock> blocks_;
+  int block_size_, threads_;
+  std::vector<double> opening_, slip_, sigma_, tau_;
+  double dissipated_ = 0, seconds_ = 0;
+};
+
+}  // namespace mortar::harness
