@@ -37,13 +37,27 @@ double pegasus(Sample&& sample, double x0, double f0, double x1, double f1, int 
   return x1;
 }
 
-// Bracket on the substep size around a regime boundary: e_lo, e_hi are the
-// elastic normal separations at the ends of substeps of size lo and hi
+// Bracket on the substep size around a boundary the substep must end on
+// (the regime boundary delta_e_n = 0, or complete separation): e_lo, e_hi are
+// the boundary function at the ends of substeps of size lo and hi
 // (docs/model.md 6). The next size is the regula falsi point, bisection
 // every third try or when the secant leaves the bracket.
 struct CrossingBracket {
   bool active = false;
   double lo = 0, e_lo = 0, hi = 0, e_hi = 0;
+  // A trial substep of size dT ended at e (across the boundary or not); the
+  // first one opens the bracket from the substep's start, where it is e0.
+  void record(double dT, double e, bool across, double e0) {
+    if (!active) {
+      *this = CrossingBracket{true, 0.0, e0, dT, e};
+    } else if (across) {
+      hi = dT;
+      e_hi = e;
+    } else {
+      lo = dT;
+      e_lo = e;
+    }
+  }
   double next(int iteration) const {
     double x = lo + (hi - lo) * e_lo / (e_lo - e_hi);
     if (!(x > lo && x < hi) || iteration % 3 == 2) x = 0.5 * (lo + hi);

@@ -97,15 +97,7 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
   if (crossed && std::abs(e0) <= boundary_eps(M, P.y)) return Crossing::from_boundary;
   bool on_boundary = false;
   if (crossed || cut_.active) {
-    if (!cut_.active) {
-      cut_ = CrossingBracket{true, 0.0, e0, dT, e1};
-    } else if (crossed) {
-      cut_.hi = dT;
-      cut_.e_hi = e1;
-    } else {
-      cut_.lo = dT;
-      cut_.e_lo = e1;
-    }
+    cut_.record(dT, e1, crossed, e0);
     if (std::abs(e1) > near && cuts_ < kMaxCrossingCuts) {
       dT = cut_.next(cuts_);
       ++cuts_;
@@ -130,15 +122,7 @@ Substepper::Separation Substepper::separation(const Point& N, double& dT) {
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
   const bool below = g1 < -1e-9;
   if (!below && !sep_cut_.active) return Separation::none;
-  if (!sep_cut_.active) {
-    sep_cut_ = CrossingBracket{true, 0.0, std::log(s0 / kSeparated), dT, g1};
-  } else if (below) {
-    sep_cut_.hi = dT;
-    sep_cut_.e_hi = g1;
-  } else {
-    sep_cut_.lo = dT;
-    sep_cut_.e_lo = g1;
-  }
+  sep_cut_.record(dT, g1, below, std::log(s0 / kSeparated));
   if (std::abs(g1) > 1e-9 && sep_cuts_ < kMaxCrossingCuts) {
     dT = sep_cut_.next(sep_cuts_);
     ++sep_cuts_;
