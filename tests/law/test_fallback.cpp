@@ -25,13 +25,18 @@ State pressed(const Model& M) {
 }
 const Vec3 kSlip(0, 0.05, 0.02);
 
-// The same increment cut into 2000 equal pieces, modified Euler at STOL 1e-8.
-Vec3 reference_traction(const Parameters& p, State s) {
-  const Model R = model_with(p, Scheme::modified_euler, 1e-8);
+// The increment d from s cut into `pieces` equal calls of R, the reference a
+// fallback is measured against; s ends where the last call leaves it.
+IncrementResult cut_into(const Model& R, State& s, const Vec3& d, int pieces) {
   IncrementResult r;
-  for (int i = 0; i < 2000; ++i) r = integrate_increment(R, s, kSlip / 2000);
+  for (int i = 0; i < pieces; ++i) r = integrate_increment(R, s, d / pieces);
   REQUIRE(r.status.ok());
-  return r.traction;
+  return r;
+}
+
+// The slip increment cut into 2000 equal pieces, modified Euler at STOL 1e-8.
+Vec3 reference_traction(const Parameters& p, State s) {
+  return cut_into(model_with(p, Scheme::modified_euler, 1e-8), s, kSlip, 2000).traction;
 }
 
 }  // namespace
@@ -105,9 +110,7 @@ TEST_CASE("Fallback: an extreme increment on which backward Euler's local solve 
   // Against the increment cut into 2000 pieces, modified Euler at STOL 1e-8.
   const Model R = model_with(p, Scheme::modified_euler, 1e-8);
   State fine = start;
-  IncrementResult q;
-  for (int i = 0; i < 2000; ++i) q = integrate_increment(R, fine, d / 2000);
-  REQUIRE(q.status.ok());
+  const IncrementResult q = cut_into(R, fine, d, 2000);
   CAPTURE(r.traction.transpose(), q.traction.transpose(), s.dn, fine.dn);
   CHECK((r.traction - q.traction).norm() <= 1e-3 * std::max(q.traction.norm(), p.ft0));
   CHECK(std::abs(s.dn - fine.dn) <= 1e-6);
@@ -138,9 +141,7 @@ TEST_CASE("Fallback: a worn open joint at d ~ 1 and s ~ 1e-4 is integrated and a
   // about 1/16 of the 1024-piece rung's).
   const Model R = model_with(p, Scheme::forward_euler);
   State fine = start;
-  IncrementResult q;
-  for (int i = 0; i < 16384; ++i) q = integrate_increment(R, fine, d / 16384);
-  REQUIRE(q.status.ok());
+  const IncrementResult q = cut_into(R, fine, d, 16384);
   CAPTURE(r.traction.transpose(), q.traction.transpose(), s.dn, fine.dn);
   CHECK((r.traction - q.traction).norm() <= 1e-2 * std::max(q.traction.norm(), p.ft0));
 }
