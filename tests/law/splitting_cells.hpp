@@ -46,7 +46,7 @@ inline std::vector<Cell> fine_cells(const std::string& family, double h) {
       {"cap", {"vdP-0.1", "M15", "rnd1"}, {"M34", "rnd2"}},
       {"open-shear-close", {"vdP-0.5", "Atk", "rnd1"}, {"M15", "rnd0"}},
       {"slip3d", {"vdP-1.0", "M34", "rnd1"}, {"vdP-0.1", "rnd2"}},
-      {"random-jumps", {"vdP-1.0", "rnd0", "rnd1"}, {"vdP-1.0", "rnd1"}},
+      {"random-jumps", {"vdP-1.0", "M15", "Atk", "rnd0", "rnd1"}, {"vdP-1.0", "M15", "Atk", "rnd1"}},
   };
   std::vector<Cell> v;
   for (const Subset& s : subsets)

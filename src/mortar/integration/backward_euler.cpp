@@ -16,7 +16,7 @@ enum class Outcome { plastic, unloading, failed };
 Outcome solve_on_branches(const Model& M, const Point& P, const Surface& S, const Vec3& dd, bool grow_n,
                           bool grow_s, BackwardEulerStep& b, IntegrationStatus& st) {
   const Vec3 kappa(P.y.wI, P.y.wII, P.y.wIII);
-  b.k = rate_stiffness(M, P.y, grow_n, grow_s);
+  b.k = rate_stiffness_over(M, P.y, dd, grow_n, grow_s);
   b.grow_n = grow_n;
   b.grow_s = grow_s;
   const Vec3 trial = P.sigma + b.k.on_separation.cwiseProduct(dd);

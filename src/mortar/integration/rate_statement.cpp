@@ -29,7 +29,7 @@ namespace {
 // Rates of one stage on given branches of the open regime (rate_stiffness).
 Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3& dd, bool grow_n, bool grow_s,
                    Vec3* dp = nullptr) {
-  const RateStiffness k = rate_stiffness(M, P.y, grow_n, grow_s);
+  const RateStiffness k = rate_stiffness_over(M, P.y, dd, grow_n, grow_s);
   const Flow f = flow_of(M, P.sigma, S, k.on_flow);
   const double num = f.dF.dot(k.on_separation.cwiseProduct(dd));
   Rates r;

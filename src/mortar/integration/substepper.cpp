@@ -52,9 +52,9 @@ double Substepper::run(const Vec3& d) {
       return T;
     }
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
-    const Separation sep = separation(*a.end, dT);
-    if (sep == Separation::cut) continue;
-    const bool separates = sep == Separation::lands;
+    const Landing sep = separation(*a.end, dT);
+    if (sep == Landing::cut || normal_completion(*a.end, dT) == Landing::cut) continue;
+    const bool separates = sep == Landing::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
     if (crossing_kind == Crossing::from_boundary) {
       at_boundary_ = true;
@@ -115,22 +115,47 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
 // kSeparated is shortened to end on it (regula falsi on the substep size in
 // log(s_raw / kSeparated), bisection as a safeguard), so that where the joint
 // separates does not depend on the cuts; settle() then disintegrates it.
-Substepper::Separation Substepper::separation(const Point& N, double& dT) {
-  if (!P.y.open) return Separation::none;
+Substepper::Landing Substepper::separation(const Point& N, double& dT) {
+  if (!P.y.open) return Landing::none;
   const double s0 = surface_of(M, P.y).s_raw, s1 = surface_of(M, N.y).s_raw;
-  if (separated(s0)) return Separation::none;
+  if (separated(s0)) return Landing::none;
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
   const bool below = g1 < -1e-9;
-  if (!below && !sep_cut_.active) return Separation::none;
+  if (!below && !sep_cut_.active) return Landing::none;
   sep_cut_.record(dT, g1, below, std::log(s0 / kSeparated));
   if (std::abs(g1) > 1e-9 && sep_cuts_ < kMaxCrossingCuts) {
     dT = sep_cut_.next(sep_cuts_);
     ++sep_cuts_;
-    return Separation::cut;
+    return Landing::cut;
   }
   sep_cuts_ = 0;
   sep_cut_ = CrossingBracket{};
-  return separated(s1) ? Separation::lands : Separation::none;
+  return separated(s1) ? Landing::lands : Landing::none;
+}
+
+// Complete normal damage inside the substep (docs/model.md 6, Decision -
+// complete normal damage): on its growing branch an open joint's normal
+// traction can fall through zero while the joint stays open, where settle()
+// sets dn = 1 and the normal stops carrying (rate stiffness 0). Past that
+// kink the Heun pair straddles two rate problems and its error estimate,
+// taken before settle(), cannot see it; so the substep is shortened to end
+// where sigma_n reaches 0 from above (regula falsi on the substep size,
+// bisection as a safeguard), within 1e-9 ft0 below it.
+Substepper::Landing Substepper::normal_completion(const Point& N, double& dT) {
+  if (!P.y.open || !(P.y.dn < 1) || !(P.sigma[0] > 0) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
+  const double g1 = N.sigma[0] / M.stress_scale;
+  const bool below = g1 < 0;
+  if (!below && !dn_cut_.active) return Landing::none;
+  dn_cut_.record(dT, g1, below, P.sigma[0] / M.stress_scale);
+  const bool landed = below && g1 >= -1e-9;
+  if (!landed && dn_cuts_ < kMaxCrossingCuts) {
+    dT = dn_cut_.next(dn_cuts_);
+    ++dn_cuts_;
+    return Landing::cut;
+  }
+  dn_cuts_ = 0;
+  dn_cut_ = CrossingBracket{};
+  return landed ? Landing::lands : Landing::none;
 }
 
 // The implicit scheme's step that ends on the regime boundary (BoundaryStep):

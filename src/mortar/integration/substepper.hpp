@@ -35,13 +35,15 @@ class Substepper {
     from_boundary,     // P is on the boundary already and the step moves across
   };
   Crossing crossing(const Point& N, const Vec3& dd, double& dT);
-  // What the separation bracket makes of a substep that ends at N.
-  enum class Separation {
-    none,   // stays above kSeparated (or was separated already)
-    cut,    // went below (or bracketing): retry with the new dT
-    lands,  // ends on kSeparated: accept, settle() disintegrates
+  // What a one-sided bracket (complete separation, complete normal damage)
+  // makes of a substep that ends at N.
+  enum class Landing {
+    none,   // stays on the near side (or was there already)
+    cut,    // went past (or bracketing): retry with the new dT
+    lands,  // ends on the boundary: accept, settle() completes the damage
   };
-  Separation separation(const Point& N, double& dT);
+  Landing separation(const Point& N, double& dT);
+  Landing normal_completion(const Point& N, double& dT);
   double end_on_boundary(const Point& N, double done);
 
   const Model& M;
@@ -54,6 +56,8 @@ class Substepper {
   int cuts_ = 0;
   CrossingBracket sep_cut_;
   int sep_cuts_ = 0;
+  CrossingBracket dn_cut_;
+  int dn_cuts_ = 0;
 };
 
 // Round-off scale of the regime boundary delta_e_n = 0 at a state.

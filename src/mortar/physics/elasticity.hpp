@@ -38,6 +38,20 @@ inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n 
   return r;
 }
 
+// The rate stiffness of a step over dd. An open joint closed against its
+// elastic opening (dd_n < 0, delta_e_n > 0) unloads that closing on the
+// normal secant kn (1 - dn), while the crack growth of its plastic flow stays
+// on the branch chosen (docs/model.md 6, Decision - closing on the tension
+// cap): on the growing branch the closing would act with the full kn, drive
+// sigma_n to zero and the secant damage to 1 within the step, where a finer
+// cut unloads elastically between plastic bursts.
+inline RateStiffness rate_stiffness_over(const Model& M, const State& y, const Vec3& dd, bool grow_n = true,
+                                         bool grow_s = true) {
+  RateStiffness k = rate_stiffness(M, y, grow_n, grow_s);
+  if (y.open && dd[0] < 0 && y.elastic_separation()[0] > 0) k.on_separation[0] = M.p.kn * (1 - y.dn);
+  return k;
+}
+
 // Elastic stiffness of Eq. 21 with the unilateral factor h of the regime.
 inline Vec3 secant_stiffness(const Model& M, double dn, double ds, bool open) {
   const double h = open ? 1.0 : 0.0;
