@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -82,6 +83,28 @@ std::vector<Unidentifiable> unidentifiable(const Eigen::MatrixXd& J, const Eigen
     kept.erase(kept.begin() + pick);
   }
   return out;
+}
+
+void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u) {
+  for (size_t k = 0; k < fit.unknowns.size(); ++k) {
+    CalibratedParameter& e = cal.entries[size_t(fit.unknowns[k].index)];
+    e.value = fit.value[long(k)];
+    e.std_error = u.std_error[long(k)];
+    if (e.stage != Stage::refined) e.stage = Stage::fit, e.how = "least squares on the whole curves";
+    else e.how += ", refined by least squares on the whole curves";
+    if (!(e.std_error <= kPoorlyDetermined * std::abs(e.value)))
+      cal.notes.push_back(std::string(kParameterInfo[size_t(fit.unknowns[k].index)].name) +
+                          " is poorly determined by these data (relative standard error " +
+                          std::to_string(int(std::lround(100 * e.std_error / std::abs(e.value)))) +
+                          " %, above " + std::to_string(int(100 * kPoorlyDetermined)) + " %): its digits are not to be trusted");
+  }
+  for (const std::string& h : fit.held) {
+    const std::string name = h.substr(0, h.find(':'));
+    CalibratedParameter& e = cal[name.c_str()];
+    e.stage = Stage::not_determined;
+    e.std_error = NAN;
+    e.how = "held at its starting value (" + e.how + "): the data determine only a combination" + h.substr(h.find('('));
+  }
 }
 
 }  // namespace mortar::harness

@@ -11,6 +11,9 @@
 
 #include <Eigen/Core>
 
+#include "calibration/calibration.hpp"
+#include "calibration/fit.hpp"
+
 namespace mortar::harness {
 
 // A parameter whose relative standard error exceeds this is reported as
@@ -44,5 +47,10 @@ struct Unidentifiable {
 };
 std::vector<Unidentifiable> unidentifiable(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& values,
                                            const std::vector<std::string>& names, const std::vector<int>& prefer_first);
+
+// Puts a one-set fit into `cal`: values, standard errors, the held unknowns
+// as not determined (with the combination the data do determine), and a note
+// for every parameter whose relative standard error exceeds kPoorlyDetermined.
+void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u);
 
 }  // namespace mortar::harness
