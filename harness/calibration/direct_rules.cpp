@@ -113,8 +113,9 @@ ShearPeak shear_peak(const TestCurve& c) {
   ShearPeak p{c.name, c.sigma_n, 0, 0};
   const size_t end = first_branch_end(c);
   p.peak = c.y[index_of_peak(c.y, end)];
-  // Residual: the last quarter of the slip travelled (monotonic), or of the
-  // last leg's |tau| once it is back on the friction plateau (cyclic).
+  // Residual: the mean |tau| over the last quarter of the slip travelled. On
+  // a cyclic curve that quarter includes the elastic parts of its reversals,
+  // which lower it: there the fit's refinement of phir matters most.
   double travel = 0;
   std::vector<double> along(c.x.size(), 0);
   for (size_t i = 1; i < c.x.size(); ++i) along[i] = travel += std::abs(c.x[i] - c.x[i - 1]);

@@ -142,7 +142,7 @@ std::string write_calibration_plots(const std::string& out_dir, const std::vecto
         if (!p.wanted(curves[i])) continue;
         const std::string file = quoted("fit_" + curves[i].name + ".csv"), col = quoted(colour[i % 6]);
         g << sep << file << " using 1:" << p.data << " with points pt 6 lc rgb " << col << " title "
-          << quoted(curves[i].name);
+          << quoted(curves[i].name) << " noenhanced";
         if (*p.fit) g << ", " << file << " using 1:" << p.fit << " with lines lw 2 lc rgb " << col << " notitle";
         sep = ", \\\n     ";
       }
