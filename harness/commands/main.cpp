@@ -2,7 +2,7 @@
 // interface points only through the ABI entry points, vuinteraction_
 // (Abaqus/Explicit) and uinter_ (Abaqus/Standard), as Abaqus would. This file
 // declares the command line; each subcommand is its own file in commands/:
-// run, validate, inp, bench, scene (harness/README.md).
+// run, validate, inp, bench, scene, calibrate (harness/README.md).
 #include <iostream>
 #include <string>
 #include <vector>
@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands/bench.hpp"
+#include "commands/calibrate.hpp"
 #include "commands/inp.hpp"
 #include "commands/run.hpp"
 #include "commands/scene.hpp"
@@ -110,6 +111,17 @@ int main(int argc, char** argv) {
   scene_cmd->add_flag("--no-plots", scene_no_plots, "Skip the charts");
   scene_cmd->add_flag("--quiet,-q", scene.quiet, "No progress on stderr");
 
+  CalibrateOptions cal;
+  bool cal_no_plots = false;
+  CLI::App* cal_cmd = app.add_subcommand("calibrate", "The 14 parameters from test curves: direct rules, then a whole-curve fit");
+  cal_cmd->add_option("--data", cal.data_dir, "Folder of test curves (*.csv with '# kind:' lines)")->required();
+  cal_cmd->add_option("--out", cal.out_dir, "Folder for params.toml, report.md, fitted curves and charts")
+      ->capture_default_str();
+  cal_cmd->add_flag("--per-sigma-n", cal.per_sigma_n, "Also fit m and n per normal stress (Table 1's practice)");
+  cal_cmd->add_option("--increments", cal.increments, "Simulation increments per curve")->capture_default_str();
+  cal_cmd->add_flag("--no-plots", cal_no_plots, "Skip the charts");
+  cal_cmd->add_flag("--quiet,-q", cal.quiet, "No progress on stderr");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -126,6 +138,10 @@ int main(int argc, char** argv) {
     scene.plots = !scene_no_plots;
     if (*scene_cmd) return scene_command(scene, std::cout, std::cerr);
     if (*inp_cmd) return inp_command(inp, std::cout);
+    if (*cal_cmd) {
+      cal.plots = !cal_no_plots;
+      return calibrate_command(cal, std::cout, std::cerr);
+    }
     if (*bench_cmd) {
       bench.plots = !bench_no_plots;
       return run_bench_command(bench, std::cout, std::cerr);

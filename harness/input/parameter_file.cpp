@@ -1,5 +1,8 @@
 #include "input/parameter_file.hpp"
 
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 #include "input/toml_input.hpp"
@@ -92,6 +95,25 @@ ParameterSet read_parameter_file(const std::string& path) {
     throw InputError(msg.str());
   }
   return set;
+}
+
+void write_parameter_file(const std::string& path, const Parameters& p, const std::vector<std::string>& header) {
+  std::ofstream out(path);
+  if (!out) throw InputError(path + ": cannot open the file for writing");
+  for (const std::string& line : header) out << "# " << line << "\n";
+  for (int i = 0; i < kParameterCount; ++i) {
+    const double x = parameter_at(p, i);
+    char number[40];
+    for (int digits = 6; digits <= 17; ++digits) {
+      std::snprintf(number, sizeof number, "%.*g", digits, x);
+      if (std::strtod(number, nullptr) == x) break;
+    }
+    char line[160];
+    std::snprintf(line, sizeof line, "%-4s = { value = %-12s unit = \"%s\" }", kParameterInfo[i].name,
+                  (std::string(number) + ",").c_str(), kUnitSpellings[i][0]);
+    out << line << "  # " << kParameterInfo[i].meaning << "\n";
+  }
+  if (!out) throw InputError(path + ": write failed");
 }
 
 }  // namespace mortar::harness

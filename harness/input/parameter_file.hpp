@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "mortar/parameters.hpp"
 
@@ -20,6 +21,11 @@ struct ParameterSet {
 };
 
 ParameterSet read_parameter_file(const std::string& path);
+
+// Writes a parameter file that read_parameter_file reads back exactly: every
+// parameter as {value, unit} with the shortest decimal that round-trips, its
+// meaning as a comment, and `header` as '#' lines first.
+void write_parameter_file(const std::string& path, const Parameters& p, const std::vector<std::string>& header);
 
 // The unit spellings accepted for parameter `index` (the canonical one first).
 // They are spellings of one unit, never conversions.

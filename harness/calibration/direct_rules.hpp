@@ -1,0 +1,47 @@
+// The first stage of the calibration: parameters that standard tests give
+// directly (the paper's "calibration methods ... using common test data and
+// physical rules"), each by a regression on the data points with its standard
+// error from that regression:
+//  - kn, ks: slopes through the origin of the elastic branches (Eq. 1: the law
+//    is elastic up to the peak);
+//  - ft0, GIC: the tension curve in closed form, sigma = ft0 exp(-ft0 d_in / GIC)
+//    with d_in = d - sigma/kn (docs/model.md 4): ft0 is its peak, GIC its area;
+//  - c0, phi0 (and ft0 without a tension test): the hyperbola of Eqs. 2-3
+//    through the peak shear strengths, tau_p^2 = c0^2 - (c0^2/ft0 + ft0 tan^2 phi0)
+//    sigma_n + tan^2 phi0 sigma_n^2, linear in its coefficients;
+//  - phir: the residual strengths, tau_r = tan(phir) |sigma_n| (Eq. 6 worn out);
+//  - psi0 (a starting value for the fit): the initial dilatancy after the
+//    peak, d(uplift)/d(plastic slip) = tan(psi) sqrt(alpha^2 + tau^2)/|tau| (docs/model.md 5).
+// Parameters the data leave open get a stated placeholder, marked not determined.
+#pragma once
+
+#include <vector>
+
+#include "calibration/calibration.hpp"
+#include "calibration/test_curve.hpp"
+
+namespace mortar::harness {
+
+// What the rules read off one shear curve (for the report and the fit).
+struct ShearPeak {
+  std::string curve;
+  double sigma_n = 0;   // [MPa]
+  double peak = 0;      // largest tau [MPa]
+  double residual = 0;  // mean tau over the last quarter of the slip [MPa]
+};
+
+struct DirectResult {
+  Calibration calibration;        // direct values; the fit's parameters hold starting values
+  std::vector<ShearPeak> peaks;   // one per shear curve
+};
+
+// InputError when the data cannot give the direct parameters: no shear
+// curve, fewer than two normal stresses, or fewer than three without a
+// tension curve (ft0 then comes from the hyperbola alone).
+DirectResult apply_direct_rules(const std::vector<TestCurve>& curves);
+
+// The placeholders that follow other parameters (kn and GIC without a tension
+// curve, psir): set by the rules, and again after the fit has moved GIIC.
+void fill_placeholders(bool tension, Calibration& cal);
+
+}  // namespace mortar::harness

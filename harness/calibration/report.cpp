@@ -1,0 +1,158 @@
+#include "calibration/report.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <ostream>
+#include <sstream>
+
+#include "input/input_error.hpp"
+#include "output/csv.hpp"
+#include "output/plots.hpp"
+#include "solvers/mixed_control.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+std::string number(double x, int digits = 4) {
+  if (std::isnan(x)) return "–";
+  if (std::isinf(x)) return "∞";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+void parameter_table(std::ostream& out, const Calibration& cal) {
+  out << "| parameter | value | unit | standard error | stage | how |\n|---|---|---|---|---|---|\n";
+  for (int i = 0; i < kParameterCount; ++i) {
+    const CalibratedParameter& e = cal.entries[size_t(i)];
+    const std::string se = e.stage == Stage::not_determined ? "not determined" : number(e.std_error, 2);
+    out << "| " << kParameterInfo[size_t(i)].name << " | " << number(e.value, 5) << " | "
+        << kParameterInfo[size_t(i)].unit << " | " << se << " | " << stage_name(e.stage) << " | " << e.how << " |\n";
+  }
+}
+
+void misfit_table(std::ostream& out, const FitResult& fit, const char* title) {
+  out << "\n**" << title << "**: RMS of the scaled residuals " << number(fit.rms, 4) << " (" << fit.unknowns.size()
+      << " unknowns, " << fit.residuals.size() << " residuals; " << fit.iterations << " iterations, " << fit.evaluations
+      << " simulations of the data set; " << fit.status << ")\n\n"
+      << "| curve | RMS traction [MPa] | RMS uplift [mm] |\n|---|---|---|\n";
+  for (const CurveMisfit& m : fit.misfit)
+    out << "| " << m.curve << " | " << (m.failed ? "run failed" : number(m.rms_traction, 3)) << " | "
+        << number(m.rms_uplift, 3) << " |\n";
+}
+
+void correlations(std::ostream& out, const FitResult& fit, const Uncertainty& u) {
+  out << "\n**Correlations of the fitted parameters** (from the Jacobian at the optimum)\n\n|   |";
+  for (const FitUnknown& k : fit.unknowns) out << " " << k.label() << " |";
+  out << "\n|---|";
+  for (size_t i = 0; i < fit.unknowns.size(); ++i) out << "---|";
+  out << "\n";
+  for (size_t i = 0; i < fit.unknowns.size(); ++i) {
+    out << "| " << fit.unknowns[i].label() << " |";
+    for (size_t j = 0; j < fit.unknowns.size(); ++j) out << " " << number(u.correlation(long(i), long(j)), 2) << " |";
+    out << "\n";
+  }
+}
+
+void per_level_values(std::ostream& out, const FitResult& fit, const Uncertainty& u) {
+  out << "\n| parameter | value | standard error |\n|---|---|---|\n";
+  for (size_t k = 0; k < fit.unknowns.size(); ++k)
+    out << "| " << fit.unknowns[k].label() << " | " << number(fit.value[long(k)], 5) << " | "
+        << number(u.std_error[long(k)], 2) << " |\n";
+}
+
+}  // namespace
+
+void write_report(std::ostream& out, const std::string& out_dir, const CalibrationReport& r) {
+  std::ostringstream md;
+  md << "# Calibration\n\n" << r.curves->size() << " curves:";
+  for (const TestCurve& c : *r.curves)
+    md << " " << c.name << " (" << test_kind_name(c.kind) << (c.shear() ? ", σn = " + number(c.sigma_n) + " MPa" : "")
+       << (c.has_uplift() ? ", uplift" : "") << ")";
+  md << "\n\n## Parameters (params.toml)\n\n";
+  parameter_table(md, r.final);
+  md << "\nStages: *direct* a rule on the data; *direct+fit* a rule's value refined by the whole-curve fit; *fit* "
+        "least squares on the whole curves; *not determined* a stated placeholder the data cannot check.\n\n"
+        "## Peaks and residual strengths read by the rules\n\n| curve | σn [MPa] | peak τ [MPa] | residual τ [MPa] |\n|---|---|---|---|\n";
+  for (const ShearPeak& p : r.direct->peaks)
+    md << "| " << p.curve << " | " << number(p.sigma_n) << " | " << number(p.peak) << " | " << number(p.residual) << " |\n";
+  md << "\n## Misfit\n";
+  misfit_table(md, *r.one_set, "One set across normal stresses");
+  if (r.per_level) {
+    misfit_table(md, *r.per_level, "m and n per normal stress (params_sn*.toml)");
+    per_level_values(md, *r.per_level, *r.per_level_uncertainty);
+  }
+  correlations(md, *r.one_set, *r.uncertainty);
+  md << "\n## Notes\n\n";
+  for (const std::string& h : r.one_set->held) md << "- held: " << h << "\n";
+  for (const std::string& n : r.final.notes) md << "- " << n << "\n";
+  out << md.str();
+  std::ofstream file(out_dir + "/report.md");
+  if (!(file << md.str())) throw InputError(out_dir + "/report.md: cannot write the report");
+}
+
+void write_fit_curves(const std::string& out_dir, const std::vector<TestCurve>& curves, const FitResult& fit,
+                      const Parameters& base, const SimulationSettings& settings) {
+  for (const TestCurve& c : curves) {
+    SimulatedCurve sim;
+    try {
+      sim = simulate(parameters_for(c, base, fit.unknowns, fit.value), c, settings);
+    } catch (const RunFailure&) {
+      continue;  // the misfit table says the run failed
+    }
+    std::vector<std::vector<double>> rows;
+    for (size_t i = 0; i < c.x.size(); ++i) {
+      std::vector<double> row = {c.x[i], c.y[i], sim.y[i], sim.y[i] - c.y[i]};
+      if (c.has_uplift()) row.insert(row.end(), {c.uplift[i], sim.uplift[i], sim.uplift[i] - c.uplift[i]});
+      rows.push_back(row);
+    }
+    std::vector<std::string> header = {"x_mm", "data_MPa", "fit_MPa", "residual_MPa"};
+    if (c.has_uplift()) header.insert(header.end(), {"uplift_data_mm", "uplift_fit_mm", "uplift_residual_mm"});
+    write_csv(out_dir + "/fit_" + c.name + ".csv", header, rows);
+  }
+}
+
+std::string write_calibration_plots(const std::string& out_dir, const std::vector<TestCurve>& curves) {
+  static const char* colour[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"};
+  const std::string name = "calibration.gp";
+  std::ofstream g(out_dir + "/" + name);
+  if (!g) throw InputError(out_dir + "/" + name + ": cannot open the file for writing");
+  g << "# Written by masonry-joint calibrate; rerun with: gnuplot " << name << "\nset datafile separator \",\"\n";
+  struct Panel {
+    const char *title, *xlabel, *ylabel, *data, *fit;
+    bool (*wanted)(const TestCurve&);
+  };
+  const Panel panels[] = {
+      {"Shear: data (points) and fit (lines)", "slip [mm]", "{/Symbol t} [MPa]", "2", "3",
+       [](const TestCurve& c) { return c.shear(); }},
+      {"Dilatancy", "slip [mm]", "uplift [mm]", "5", "6", [](const TestCurve& c) { return c.has_uplift(); }},
+      {"Tension", "opening [mm]", "{/Symbol s}_n [MPa]", "2", "3", [](const TestCurve& c) { return !c.shear(); }},
+      {"Residuals (fit - data)", "slip or opening [mm]", "[MPa]", "4", "", [](const TestCurve&) { return true; }}};
+  for (const char* ext : {"png", "svg"}) {
+    g << "\nset terminal " << (ext[0] == 'p' ? "pngcairo" : "svg")
+      << " size 1200,900 enhanced font \"DejaVu Sans,11\" background \"white\"\nset output \"calibration." << ext
+      << "\"\nset grid lc rgb \"#c8c8c8\"\nset key outside right\nset multiplot layout 2,2 title \"Calibration\"\n";
+    for (const Panel& p : panels) {
+      g << "set title " << quoted(p.title) << "\nset xlabel " << quoted(p.xlabel) << "\nset ylabel " << quoted(p.ylabel)
+        << "\nplot ";
+      std::string sep;
+      for (size_t i = 0; i < curves.size(); ++i) {
+        if (!p.wanted(curves[i])) continue;
+        const std::string file = quoted("fit_" + curves[i].name + ".csv"), col = quoted(colour[i % 6]);
+        g << sep << file << " using 1:" << p.data << " with points pt 6 lc rgb " << col << " title "
+          << quoted(curves[i].name) << " noenhanced";
+        if (*p.fit) g << ", " << file << " using 1:" << p.fit << " with lines lw 2 lc rgb " << col << " notitle";
+        sep = ", \\\n     ";
+      }
+      if (sep.empty()) g << "NaN notitle";
+      g << "\n";
+    }
+    g << "unset multiplot\nset output\n";
+  }
+  if (!g) throw InputError(out_dir + "/" + name + ": write failed");
+  return name;
+}
+
+}  // namespace mortar::harness

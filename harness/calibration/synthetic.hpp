@@ -1,0 +1,42 @@
+// Synthetic test curves: made by the law from a known parameter set, through
+// the same simulation as the fit (calibration/simulation.hpp), then resampled
+// the way a person digitises a figure and perturbed by noise. They exist to
+// test the calibration against known true values; they are never experimental
+// data, and every file written from them says so.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "calibration/simulation.hpp"
+#include "calibration/test_curve.hpp"
+#include "mortar/parameters.hpp"
+
+namespace mortar::harness {
+
+// One test of a synthetic programme.
+struct SyntheticTest {
+  TestKind kind = TestKind::shear;
+  double sigma_n = 0;               // shear kinds [MPa], < 0
+  double travel = 0;                // tension: final opening; shear: final slip [mm]
+  std::vector<double> amplitudes;   // cyclic_shear: slip amplitudes [mm], one cycle each, about 0
+  int points = 30;                  // digitised points
+  bool uplift = true;               // shear kinds: dilatancy measured
+};
+
+// The programme used by the tests and the shipped example: tension to about
+// 3 % of ft0, and monotonic shear at sigma_n = -0.1, -0.5, -1.0 MPa to a slip
+// that wears the joint out (from GIIC/c0), with dilatancy.
+std::vector<SyntheticTest> standard_programme(const Parameters& p, int points);
+
+// The law's curve, dense (about 600 increments), resampled at `points` points
+// equally spaced in arc length on the chart's scaled axes (each axis divided
+// by its range, as a figure is drawn), the peak always among them, as a
+// digitiser clicks it. Then Gaussian noise of standard deviation
+// `noise` x the curve's largest |value| on the ordinate and the uplift
+// (noise = 0.02: 2 %). Deterministic for a given seed.
+TestCurve synthetic_curve(const Parameters& p, const SyntheticTest& test, double noise, std::uint32_t seed,
+                          const std::string& name);
+
+}  // namespace mortar::harness

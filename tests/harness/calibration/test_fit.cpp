@@ -1,0 +1,45 @@
+// The whole calibration on synthetic curves of van der Pluijm's set with 1 %
+// noise, against the true parameters that made them: the strengths within
+// 2 %, GIIC within 5 %, m, n and psi0 within three of their own standard
+// errors (the fit's claim about itself), and bn, bs named as not determined
+// (under compression only GIIC/(1 + bs) and m(1 + bs) act, Eqs. 8-9, 17; pure
+// tension never sees bn).
+#include <catch2/catch.hpp>
+
+#include "calibration/direct_rules.hpp"
+#include "calibration/fit.hpp"
+#include "calibration/synthetic.hpp"
+#include "calibration/uncertainty.hpp"
+#include "paper_sets.hpp"
+
+using namespace mortar;
+using namespace mortar::harness;
+
+TEST_CASE("calibration recovers the parameters that made the curves", "[calibration]") {
+  const Parameters truth = testing::van_der_pluijm(-0.5);
+  std::vector<TestCurve> curves;
+  std::uint32_t seed = 100;
+  for (const SyntheticTest& t : standard_programme(truth, 30))
+    curves.push_back(synthetic_curve(truth, t, 0.01, seed, "c" + std::to_string(seed))), ++seed;
+  const DirectResult direct = apply_direct_rules(curves);
+  const FitResult fit = fit_softening(curves, direct.calibration, FitOptions{});
+  const Uncertainty u = uncertainty_from(fit.jacobian, fit.residuals);
+  Calibration c = direct.calibration;
+  apply_fit(c, fit, u);
+  auto error = [&](const char* name) {
+    return std::abs(c[name].value - parameter_at(truth, parameter_index(name)));
+  };
+  for (const char* name : {"kn", "ks", "ft0", "GIC", "c0", "phi0", "phir"}) {
+    INFO(name << " = " << c[name].value);
+    CHECK(error(name) < 0.02 * parameter_at(truth, parameter_index(name)));
+  }
+  CHECK(error("GIIC") < 0.05 * truth.GIIC);
+  for (const char* name : {"m", "n", "psi0"}) {
+    INFO(name << " = " << c[name].value << " +- " << c[name].std_error);
+    CHECK(c[name].stage == Stage::fit);
+    CHECK(error(name) < 3 * c[name].std_error);
+  }
+  CHECK(c["bn"].stage == Stage::not_determined);
+  CHECK(c["bs"].stage == Stage::not_determined);
+  CHECK(fit.rms < 0.02);  // the noise is 1 % of each curve's scale
+}
