@@ -214,6 +214,26 @@ Outcome least_squares(Residuals& residuals, const std::vector<FitUnknown>& unkno
   return {f.transform.value(t), int(lm.iter), status_text(status)};
 }
 
+// The softening and wear alone, from the rules' starting values and from a
+// second start with three times their GIIC; the better of the two. The work
+// beyond the residual underestimates GIIC where the curves stop before the
+// cohesion is gone, and from there the softening alone can slide into the
+// basin of a vanishing GIIC (measured on Almeida M15's synthetic curves:
+// GIIC at its lower bound, RMS misfit 0.13; from the second start 0.0096).
+Outcome softening_alone(Residuals& residuals, const std::vector<FitUnknown>& softening, const Eigen::VectorXd& w,
+                        const FitOptions& o) {
+  Outcome best = least_squares(residuals, softening, w, o);
+  for (size_t k = 0; k < softening.size(); ++k) {
+    if (softening[k].label() != "GIIC") continue;
+    Eigen::VectorXd w3 = w;
+    w3[long(k)] = std::min(3 * w[long(k)], softening[k].hi);
+    Outcome second = least_squares(residuals, softening, w3, o);
+    if (residuals(softening, second.value).squaredNorm() < residuals(softening, best.value).squaredNorm())
+      best = std::move(second);
+  }
+  return best;
+}
+
 }  // namespace
 
 FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration& start, const FitOptions& o) {
@@ -252,7 +272,7 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
     if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined)
       w[long(softening.size())] = v[long(k)], softening.push_back(fit.unknowns[k]);
   w.conservativeResize(long(softening.size()));
-  Outcome first = least_squares(residuals, softening, w, o);
+  const Outcome first = softening_alone(residuals, softening, w, o);
   for (size_t k = 0, j = 0; k < fit.unknowns.size(); ++k)
     if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined) v[long(k)] = first.value[long(j++)];
   const Outcome all_at_once = least_squares(residuals, fit.unknowns, v, o);
