@@ -15,17 +15,27 @@
 using namespace mortar;
 using namespace mortar::harness;
 
-TEST_CASE("calibration recovers the parameters that made the curves", "[calibration]") {
-  const Parameters truth = testing::van_der_pluijm(-0.5);
+namespace {
+
+// The whole calibration of the standard programme's curves of `truth` (30
+// points each, 1 % noise, seeds from `seed`): direct rules, then the fit.
+Calibration calibrate_synthetic(const Parameters& truth, std::uint32_t seed, FitResult& fit) {
   std::vector<TestCurve> curves;
-  std::uint32_t seed = 100;
   for (const SyntheticTest& t : standard_programme(truth, 30))
     curves.push_back(synthetic_curve(truth, t, 0.01, seed, "c" + std::to_string(seed))), ++seed;
   const DirectResult direct = apply_direct_rules(curves);
-  const FitResult fit = fit_softening(curves, direct.calibration, FitOptions{});
-  const Uncertainty u = uncertainty_from(fit.jacobian, fit.residuals);
+  fit = fit_softening(curves, direct.calibration, FitOptions{});
   Calibration c = direct.calibration;
-  apply_fit(c, fit, u);
+  apply_fit(c, fit, uncertainty_from(fit.jacobian, fit.residuals));
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("calibration recovers the parameters that made the curves", "[calibration]") {
+  const Parameters truth = testing::van_der_pluijm(-0.5);
+  FitResult fit;
+  const Calibration c = calibrate_synthetic(truth, 100, fit);
   auto error = [&](const char* name) {
     return std::abs(c[name].value - parameter_at(truth, parameter_index(name)));
   };
@@ -51,14 +61,8 @@ TEST_CASE("calibration recovers the parameters that made the curves", "[calibrat
 // true basin: GIIC within 5 % and a misfit at the noise level.
 TEST_CASE("calibration of Almeida M15's curves does not stop where GIIC vanishes", "[calibration]") {
   const Parameters truth = testing::almeida_m15();
-  std::vector<TestCurve> curves;
-  std::uint32_t seed = 12;
-  for (const SyntheticTest& t : standard_programme(truth, 30))
-    curves.push_back(synthetic_curve(truth, t, 0.01, seed, "c" + std::to_string(seed))), ++seed;
-  const DirectResult direct = apply_direct_rules(curves);
-  const FitResult fit = fit_softening(curves, direct.calibration, FitOptions{});
-  Calibration c = direct.calibration;
-  apply_fit(c, fit, uncertainty_from(fit.jacobian, fit.residuals));
+  FitResult fit;
+  const Calibration c = calibrate_synthetic(truth, 12, fit);
   INFO("GIIC = " << c["GIIC"].value << ", c0 = " << c["c0"].value << ", RMS misfit " << fit.rms);
   CHECK(std::abs(c["GIIC"].value - truth.GIIC) < 0.05 * truth.GIIC);
   CHECK(std::abs(c["c0"].value - truth.c0) < 0.02 * truth.c0);
