@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <ostream>
+#include <stdexcept>
 
 #include "bench/plots.hpp"
 #include "bench/report.hpp"
@@ -40,6 +41,16 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
     err << "masonry-joint bench: the reference moved by " << format_number(std::max(spread.traction, spread.energy), 2)
         << " when tightened (reference.csv); the study needs less than " << format_number(kReferenceRequired, 2)
         << " to tell accurate runs from inaccurate ones\n";
+    return 1;
+  }
+  return 0;
+}
+
+int run_throughput_command(const ThroughputOptions& options, std::ostream& out, std::ostream& err) {
+  try {
+    out << throughput_report(run_throughput(options, err));
+  } catch (const std::runtime_error& e) {
+    err << "masonry-joint " << e.what() << "\n";
     return 1;
   }
   return 0;

@@ -98,6 +98,14 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_flag("--no-plots", bench_no_plots, "Skip the charts");
   bench_cmd->add_flag("--quiet,-q", bench.quiet, "No progress on stderr");
+  bool throughput = false;
+  ThroughputOptions throughput_options;
+  bench_cmd->add_flag("--throughput", throughput,
+                      "Instead of the study: ns per point-update (copy pass, elastic, softening, sliding), both "
+                      "precisions, in and out of cache, 1 and 2 threads, and their ratios");
+  bench_cmd->add_option("--repeats", throughput_options.repeats, "--throughput: timed repeats per case (median)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
 
   SceneArgs scene;
   CLI::App* scene_cmd = app.add_subcommand("scene", "A wall of rigid blocks through vuinteraction_ (explicit dynamics)");
@@ -141,6 +149,12 @@ int main(int argc, char** argv) {
     if (*cal_cmd) {
       cal.plots = !cal_no_plots;
       return calibrate_command(cal, std::cout, std::cerr);
+    }
+    if (*bench_cmd && throughput) {
+      throughput_options.data_dir = bench.data_dir;
+      throughput_options.quick = bench.quick;
+      throughput_options.quiet = bench.quiet;
+      return run_throughput_command(throughput_options, std::cout, std::cerr);
     }
     if (*bench_cmd) {
       bench.plots = !bench_no_plots;

@@ -1,0 +1,291 @@
+#include "bench/throughput.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "bench/drive.hpp"
+#include "bench/throughput_call.hpp"
+#include "input/parameter_file.hpp"
+#include "mortar/state.hpp"
+#include "vuinteraction.h"
+
+namespace mortar::harness {
+
+VuinteractionRoutine<double> double_precision_routine() { return &vuinteraction_; }
+
+const char* workload_name(Workload w) {
+  switch (w) {
+    case Workload::copy: return "copy";
+    case Workload::elastic: return "elastic";
+    case Workload::softening: return "softening";
+    case Workload::sliding: return "sliding";
+  }
+  return "?";
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr int kBlock = 128;  // points per call, as in Abaqus/Explicit's blocks
+// Law signs: the joint is pressed to sigma_n = -0.5 MPa (the penetration that
+// gives it on the undamaged joint) and holds that penetration.
+constexpr double kPressure = 0.5;        // MPa
+constexpr double kElasticStep = 1e-7;    // mm, alternating in sign
+constexpr double kPlasticStep = 1e-5;    // mm of slip per increment
+constexpr double kPreStep = 1e-4;        // mm: the pre-drive to the start states
+constexpr double kSofteningSlip = 0.03;  // mm: past the peak, s about 0.6
+constexpr double kResidualSlip = 1.0;    // mm: s = 0, friction worn to phir
+
+// The copy pass: what every point-update costs at least. Per point it reads
+// the arrays the routine reads (penetration, drDisp, dRot, the state as far
+// as the routine's layout goes, sed) and writes the ones it writes (state,
+// stress, the energies, the fluxes); the state goes through a local copy the
+// compiler must keep, as the routine's does.
+template <class Real>
+void copy_pass(Real* stress, Real* flux_slv, Real* flux_mst, Real* state, Real* sed, Real* sfd, Real* scd, Real* spd,
+               Real* svd, const int* n_block, const int*, const int*, const int*, const int*, const int*,
+               const int* n_dir, const int* n_states, const int*, const int*, const int*, const int*, const Real*,
+               const char*, const char*, const char*, const int*, const int*, const Real*, const Real* penetration,
+               const Real* dr_disp, const Real* d_rot, const Real*, const Real*, const Real*, const Real*,
+               const Real*, const Real*, const Real*, const Real*, const Real*, const Real*, const Real*,
+               const Real*, const Real*, const Real*, const Real*, int, int, int) {
+  const int nd = *n_dir, ns = *n_states;
+  const int used = std::min(ns, sizeof(Real) == 4 ? kPairedStateCount : kStateCount);
+  for (int k = 0; k < *n_block; ++k) {
+    Real local[kPairedStateCount];
+    Real* st = state + long(k) * ns;
+    std::copy(st, st + used, local);
+    const Real* dd = dr_disp + long(k) * nd;
+    const Real* rot = d_rot + 4L * k;
+    local[slot::separation_s1] += dd[1] * rot[0];
+    local[slot::separation_s2] += dd[2] * rot[3];
+    asm volatile("" : : "r"(local) : "memory");
+    std::copy(local, local + used, st);
+    stress[long(k) * nd] = -penetration[k];
+    for (int i = 1; i < nd; ++i) stress[long(k) * nd + i] = dd[i];
+    sed[k] = sed[k] + penetration[k];
+    spd[k] = sfd[k] = scd[k] = svd[k] = flux_slv[k] = flux_mst[k] = Real(0);
+  }
+}
+
+// One precision's points: the arrays, the routine, and the start state of
+// each workload (one point driven there, then copied to every point).
+template <class Real>
+class Cases {
+ public:
+  Cases(VuinteractionRoutine<Real> routine, const std::vector<double>& props, long points)
+      : routine_(routine), props_(props), a_(int(points), n_states(), props, 2) {
+    start_[0] = start_[1] = drive(0);  // copy, elastic
+    start_[2] = drive(kSofteningSlip);
+    start_[3] = drive(kResidualSlip);
+    // The elastic increments alternate: variant 0 (restore()) presses further
+    // and slips forward by 1e-7 mm, variant 1 goes back.
+    for (long k = 0; k < a_.points; ++k) {
+      a_.penetration[1][k] = Real(pressed());
+      a_.dr_disp[1][k * 3 + 1] = a_.dr_disp[1][k * 3 + 2] = Real(-kElasticStep);
+    }
+  }
+
+  // Median-ready sample: wall ns per point-update of `w` over `increments`
+  // increments of the first `points` points, on `threads` threads (each its
+  // own contiguous share of the blocks), from the workload's start state.
+  double time(Workload w, long points, int threads, long increments) {
+    restore(w, points);
+    const bool plastic = w == Workload::softening || w == Workload::sliding;
+    auto work = [&](long first, long last) {
+      for (long i = 0; i < increments; ++i) {
+        const int variant = plastic ? 0 : int(i % 2);
+        for (long b = first; b < last; b += kBlock) call(w, b, int(std::min<long>(kBlock, last - b)), variant);
+      }
+    };
+    const Clock::time_point t0 = Clock::now();
+    if (threads == 1) {
+      work(0, points);
+    } else {
+      std::vector<std::thread> pool;
+      const long blocks = (points + kBlock - 1) / kBlock;
+      for (int t = 0; t < threads; ++t)
+        pool.emplace_back(work, std::min(points, blocks * t / threads * kBlock),
+                          std::min(points, blocks * (t + 1) / threads * kBlock));
+      for (std::thread& th : pool) th.join();
+    }
+    const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
+    check(w, points);
+    return ns / (double(points) * double(increments));
+  }
+
+ private:
+  static int n_states() { return sizeof(Real) == 4 ? kPairedStateCount : kStateCount; }
+  double pressed() const { return kPressure / props_[0]; }
+
+  void call(Workload w, long first, int count, int variant) {
+    if (w == Workload::copy) {
+      a_.call(&copy_pass<Real>, first, count, variant);
+    } else {
+      a_.call(routine_, first, count, variant);
+    }
+  }
+
+  struct Start {
+    std::vector<Real> state, stress;
+    Real sed = 0;
+  };
+
+  // One point from the reference state: pressed, then slipped to `slip` in
+  // steps of kPreStep.
+  Start drive(double slip) {
+    PointArrays<Real> one(1, n_states(), props_, 1);
+    one.call(routine_, 0, 1, 0);  // the reference call
+    one.penetration[0][0] = Real(pressed());
+    one.call(routine_, 0, 1, 0);
+    const long steps = std::lround(slip / kPreStep);
+    one.dr_disp[0][1] = Real(kPreStep);
+    for (long i = 0; i < steps; ++i) one.call(routine_, 0, 1, 0);
+    if (one.state[slot::status] != Real(0)) throw std::runtime_error("bench --throughput: the pre-drive failed");
+    return {one.state, one.stress, one.sed[0]};
+  }
+
+  // Every point back at the workload's start, and variant 0 the workload's
+  // inputs: the elastic forward step, or 1e-5 mm of slip at the pressed
+  // penetration (every increment of the plastic workloads).
+  void restore(Workload w, long points) {
+    const Start& s = start_[int(w)];
+    const bool plastic = w == Workload::softening || w == Workload::sliding;
+    for (long k = 0; k < points; ++k) {
+      std::copy(s.state.begin(), s.state.end(), &a_.state[k * n_states()]);
+      std::copy(s.stress.begin(), s.stress.end(), &a_.stress[k * 3]);
+      a_.sed[k] = s.sed;
+      a_.penetration[0][k] = Real(pressed() + (plastic ? 0.0 : kElasticStep));
+      a_.dr_disp[0][k * 3 + 1] = Real(plastic ? kPlasticStep : kElasticStep);
+      a_.dr_disp[0][k * 3 + 2] = Real(plastic ? 0.0 : kElasticStep);
+    }
+  }
+
+  // Every point integrated, and in the regime its workload names.
+  void check(Workload w, long points) const {
+    if (w == Workload::copy) return;
+    for (long k = 0; k < points; ++k) {
+      const bool dissipated = a_.spd[k] != Real(0);
+      const bool plastic = w != Workload::elastic;
+      if (a_.state[k * n_states() + slot::status] != Real(0) || dissipated != plastic)
+        throw std::runtime_error(std::string("bench --throughput: point ") + std::to_string(k + 1) + " of the " +
+                                 workload_name(w) + " workload left its regime or failed");
+    }
+  }
+
+  VuinteractionRoutine<Real> routine_;
+  std::vector<double> props_;
+  PointArrays<Real> a_;
+  Start start_[4];
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Every configuration of one precision. The workloads of a configuration are
+// interleaved within each repeat, so that a slow moment of a shared machine
+// falls on all of them alike; each case is timed over enough increments to
+// last about `seconds`.
+template <class Real>
+void run_precision(VuinteractionRoutine<Real> routine, const std::vector<double>& props, long out_points,
+                   const ThroughputOptions& o, ThroughputResult& r, std::ostream& err) {
+  const double seconds = o.quick ? 2e-4 : 0.04;
+  Cases<Real> cases(routine, props, std::max<long>(out_points, 2 * kBlock));
+  for (const bool in_cache : {true, false}) {
+    for (const int threads : {1, 2}) {
+      ThroughputRow row;
+      row.single = sizeof(Real) == 4;
+      row.in_cache = in_cache;
+      row.threads = threads;
+      row.points = in_cache ? long(kBlock) * threads : out_points;
+      long increments[4];
+      std::vector<double> samples[4];
+      for (const Workload w : kWorkloads) {  // warm-up, and the number of increments
+        const double ns = cases.time(w, row.points, threads, 2);
+        increments[int(w)] = std::max(2L, long(seconds * 1e9 / (ns * double(row.points))) & ~1L);
+      }
+      for (int rep = 0; rep < r.repeats; ++rep)
+        for (const Workload w : kWorkloads)
+          samples[int(w)].push_back(cases.time(w, row.points, threads, increments[int(w)]));
+      for (const Workload w : kWorkloads) row.ns[int(w)] = median(samples[int(w)]);
+      r.rows.push_back(row);
+      if (!o.quiet)
+        err << "bench --throughput: " << (row.single ? "single" : "double") << ", " << row.points << " points, "
+          << threads << " thread(s) done\n";
+    }
+  }
+}
+
+std::string fixed(double x, int digits) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << x;
+  return o.str();
+}
+
+}  // namespace
+
+ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
+  const Parameters p = read_parameter_file(o.data_dir + "/almeida_tension/params_M15.toml").values;
+  const std::vector<double> props = bench_props(p, SchemeControls{});
+  ThroughputResult r;
+  r.block = kBlock;
+  r.repeats = o.quick ? 1 : std::max(1, o.repeats);
+  // Out of cache: about 40 MB of the arrays the routine touches (double),
+  // ten times the 4 MB second-level cache of the machine in README "Speed".
+  r.points_out_of_cache = o.quick ? 4L * kBlock : 1024L * kBlock;
+  run_precision<double>(double_precision_routine(), props, r.points_out_of_cache, o, r, err);
+  run_precision<float>(single_precision_routine(), props, r.points_out_of_cache, o, r, err);
+  return r;
+}
+
+std::string throughput_report(const ThroughputResult& r) {
+  auto ns = [](const ThroughputRow& row, Workload w) { return row.ns[int(w)]; };
+  std::ostringstream o;
+  o << "ns per point-update (median of " << r.repeats << "), blocks of " << r.block
+    << " points, nDir = 3, Almeida M15 at sigma_n = -0.5 MPa: elastic +-1e-7 mm, softening and sliding "
+       "(residual surface) at 1e-5 mm of slip per increment\n\n"
+    << "| precision | points | threads | copy | elastic | softening | sliding | elastic / copy | softening / "
+       "elastic | sliding / elastic |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  for (const ThroughputRow& row : r.rows) {
+    o << "| " << (row.single ? "single" : "double") << " | " << row.points << (row.in_cache ? " (in cache)" : "")
+      << " | " << row.threads << " | " << fixed(ns(row, Workload::copy), 1) << " | "
+      << fixed(ns(row, Workload::elastic), 1) << " | " << fixed(ns(row, Workload::softening), 1) << " | "
+      << fixed(ns(row, Workload::sliding), 1) << " | "
+      << fixed(ns(row, Workload::elastic) / ns(row, Workload::copy), 2) << " | "
+      << fixed(ns(row, Workload::softening) / ns(row, Workload::elastic), 2) << " | "
+      << fixed(ns(row, Workload::sliding) / ns(row, Workload::elastic), 2) << " |\n";
+  }
+  o << "\n2 threads against 1 (throughput):\n\n| precision | points | copy | elastic | softening | sliding |\n"
+       "|---|---|---|---|---|---|\n";
+  double worst_copy = 0, worst_sliding = 0, worst_threads = 1e300;
+  for (size_t i = 0; i + 1 < r.rows.size(); i += 2) {
+    const ThroughputRow &one = r.rows[i], &two = r.rows[i + 1];
+    o << "| " << (one.single ? "single" : "double") << " | " << (one.in_cache ? "in cache" : "out of cache");
+    for (const Workload w : kWorkloads) o << " | " << fixed(ns(one, w) / ns(two, w), 2);
+    o << " |\n";
+    for (const ThroughputRow* row : {&one, &two}) {
+      worst_copy = std::max(worst_copy, ns(*row, Workload::elastic) / ns(*row, Workload::copy));
+      worst_sliding = std::max(worst_sliding, ns(*row, Workload::sliding) / ns(*row, Workload::elastic));
+    }
+    for (const Workload w : {Workload::elastic, Workload::softening, Workload::sliding})
+      worst_threads = std::min(worst_threads, ns(one, w) / ns(two, w));
+  }
+  auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
+  o << "\ntargets (issue 13), worst case over the rows:\n"
+    << "- elastic / copy <= 2: " << fixed(worst_copy, 2) << ", " << verdict(worst_copy <= 2) << "\n"
+    << "- sliding / elastic <= 10: " << fixed(worst_sliding, 2) << ", " << verdict(worst_sliding <= 10) << "\n"
+    << "- 2 threads >= 1.8 x 1 thread (law workloads): " << fixed(worst_threads, 2) << ", "
+    << verdict(worst_threads >= 1.8) << "\n";
+  return o.str();
+}
+
+}  // namespace mortar::harness

@@ -1,0 +1,57 @@
+// `masonry-joint bench --throughput`: the cost of one point-update of
+// vuinteraction_ against the cost of touching its arrays.
+//
+// In Abaqus/Explicit the routine runs for every contact point at every
+// increment, most points elastic most of the time, so its cost per
+// point-update is the cost of the analysis. What can be asked of it is a
+// ratio: an elastic update close to a pass that only reads and writes the
+// arrays the routine touches (the memory limit), plastic updates within a
+// small factor of the elastic one, and blocks on two threads twice as fast.
+// Absolute times belong to a machine; the ratios measured within one run are
+// the targets (README, "Speed").
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace mortar::harness {
+
+struct ThroughputOptions {
+  std::string data_dir;  // calibration_data/ (the M15 parameter set)
+  bool quick = false;    // tiny sizes: checks that it runs, measures nothing
+  int repeats = 7;       // timed repeats per case; medians are reported
+  bool quiet = false;    // no progress on stderr
+};
+
+// What each case times, per point and increment.
+enum class Workload { copy, elastic, softening, sliding };
+inline constexpr Workload kWorkloads[] = {Workload::copy, Workload::elastic, Workload::softening, Workload::sliding};
+const char* workload_name(Workload w);
+
+// One configuration: a precision, the points in or out of cache, 1 or 2
+// threads; the median ns per point-update of each workload (wall time over
+// points x increments, so that 2 threads show their throughput).
+struct ThroughputRow {
+  bool single = false;
+  bool in_cache = true;
+  int threads = 1;
+  long points = 0;
+  double ns[4] = {};  // by Workload
+};
+
+struct ThroughputResult {
+  int block = 0, repeats = 0;
+  long points_out_of_cache = 0;
+  std::vector<ThroughputRow> rows;
+};
+
+// Runs every case; std::runtime_error when a routine call fails or a
+// workload leaves its regime (an elastic update that dissipates, a plastic
+// one that does not).
+ThroughputResult run_throughput(const ThroughputOptions& options, std::ostream& err);
+
+// The table of ns per point-update, the ratios and the targets (markdown).
+std::string throughput_report(const ThroughputResult& r);
+
+}  // namespace mortar::harness
