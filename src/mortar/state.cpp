@@ -1,7 +1,8 @@
 #include "mortar/state.hpp"
 
 #include <cmath>
-#include <limits>
+#include <cstdint>
+#include <cstring>
 
 namespace mortar {
 
@@ -18,7 +19,15 @@ const char* const kLowStateNames[kPairedStateCount - kStateCount] = {
 bool pair_consistent(float high, float low) {
   if (!std::isfinite(high) || !std::isfinite(low)) return false;
   const float h = std::fabs(high);
-  const float spacing = std::nextafter(h, std::numeric_limits<float>::infinity()) - h;
+  // nextafter(h, +inf) without the library call (it runs for 11 slots on
+  // every point-update): the next float up has the next bit pattern, for
+  // every finite h >= 0 (FLT_MAX's successor is +inf, 0's the least denormal).
+  std::uint32_t bits;
+  std::memcpy(&bits, &h, sizeof bits);
+  ++bits;
+  float next;
+  std::memcpy(&next, &bits, sizeof next);
+  const float spacing = next - h;
   return std::fabs(low) <= spacing;
 }
 

@@ -1,0 +1,57 @@
+// The elastic increment without the integration machinery: most points of an
+// Abaqus/Explicit analysis are elastic at most increments, and for them the
+// full path (integrator.cpp: scheme, segments, intersection search) ends in
+// one elastic segment, separation += d and the traction of Eq. 1. This test
+// proves that outcome from the start and end tractions alone, with no
+// transcendental function on the common path; the caller then books it with
+// the very same arithmetic (bit for bit the full path's result). A point the
+// test cannot prove elastic (near or on the surface, at a regime boundary)
+// takes the full path, which decides exactly.
+#pragma once
+
+#include <cmath>
+
+#include "mortar/integration/substepper.hpp"
+#include "mortar/physics/damage.hpp"
+#include "mortar/physics/elasticity.hpp"
+
+namespace mortar {
+
+// An increment d from a valid state y is certainly elastic by the rule of
+// IncrementIntegration: the regime is consistent at the start and not crossed
+// (run(), the same expressions), and both the start traction and the elastic
+// end traction K (delta_e + d) lie inside the surface by more than FTOL, so
+// that the segment is neither on the surface nor reaches it (segment()).
+//
+// Inside is proved from upper bounds, not from F itself: with q = beta -
+// sigma_n tan(phi) - (FTOL bound) - margin, F < -(FTOL bound) whenever q > 0
+// and alpha^2 + tau^2 < q^2, where alpha, beta and tan(phi) are computed as
+// surface_of() does, the squares spare the square roots of F and of FTOL's
+// norm (its bound uses the 1-norm), and the margin, 1e-12 of the terms' size,
+// is a thousand times the round-off by which this evaluation and hypot()'s
+// can differ. A point within that margin of the surface takes the full path.
+inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
+  const double e_n = y.separation[0] - y.plastic[0];
+  const double eps = boundary_eps(M, y);
+  if ((y.open && e_n < -eps) || (!y.open && e_n > eps)) return false;
+  if (crosses(y.open, e_n + d[0]) && std::abs(e_n + d[0]) > eps) return false;
+
+  const Parameters& p = M.p;
+  const double s = std::max(0.0, 1.0 - y.wI / p.GIC - y.wII / p.GIIC);
+  const double t = y.wIII > 0 ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * std::exp(-p.m * y.wIII) : M.tan_phi0;
+  const double C_t = M.cohesion_term / t;
+  const double alpha = s * 0.5 * (C_t - p.ft0 * t), beta = s * 0.5 * (C_t + p.ft0 * t);
+  auto inside = [&](const Vec3& sigma) {
+    const double tn = sigma[0] * t;
+    const double abs_sum = std::abs(sigma[0]) + std::abs(sigma[1]) + std::abs(sigma[2]);
+    const double ftol = M.controls.ftol * std::max(abs_sum, M.stress_scale) * (1 + 1e-12);
+    const double size = std::abs(alpha) + std::abs(sigma[1]) + std::abs(sigma[2]) + std::abs(tn) + beta + ftol;
+    const double q = beta - tn - ftol - 1e-12 * size;
+    return q > 0 && alpha * alpha + sigma[1] * sigma[1] + sigma[2] * sigma[2] < q * q;
+  };
+  const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
+  const Vec3 e0 = y.elastic_separation();
+  return inside(K.cwiseProduct(e0)) && inside(K.cwiseProduct(e0 + d));
+}
+
+}  // namespace mortar
