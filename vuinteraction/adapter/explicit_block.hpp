@@ -267,7 +267,7 @@ struct ExplicitBlock {
     const Real sed_end = Real(r.elastic_energy);
     const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
     const Real energies[2] = {sed_end, spd_end};
-    if (!(all_finite(end, count) & all_finite(stress_end, counts.n_dir) & all_finite(energies, 2)))
+    if (!all_finite(end, count) || !all_finite(stress_end, counts.n_dir) || !all_finite(energies, 2))
       return reject_point(k, mortar::Failure::non_finite_result);
     std::copy(end, end + count, st);
     std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
