@@ -23,9 +23,11 @@ build=build-fuzz
 bash tools/install-deps.sh clang libclang-rt-14-dev
 jobs=$(nproc 2>/dev/null || echo 2)
 
-# -O1 -g1 (line tables for the reports) and no NDEBUG: assertions (Eigen's included) stay on.
+# -O2 -g1 (line tables for the reports) and no NDEBUG: assertions (Eigen's included) stay on.
+# -O2 rather than -O1: Eigen's small expressions inlined, 1.3 times the executions
+# per second with the same instrumentation (docs/robustness.md).
 mkdir -p "$build"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
   -DCMAKE_CXX_COMPILER=clang++ -DMJ_FUZZ=ON -DMJ_SANITIZE=address,undefined > "$build/configure.log" 2>&1 \
   || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j"$jobs" --target fuzz_vuinteraction_double fuzz_vuinteraction_single

@@ -127,10 +127,34 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   return res;
 }
 
+// An increment certainly_elastic() proves elastic, booked as integrate_with()
+// books one elastic segment over all of d, whatever the scheme: the same sum
+// and the same functions of the end state, no dissipation (x - x = +0, the
+// result's defaults), no substeps. False (state untouched) when it cannot
+// prove it or the end lies beyond double's range (the full path reports that).
+bool elastic_increment(const Model& M, State& state, const Vec3& d, IncrementResult& res) {
+  if (!certainly_elastic(M, state, d)) return false;
+  const Vec3 separation0 = state.separation;
+  state.separation += d;
+  res.traction = traction_of(M, state);
+  res.elastic_energy = elastic_energy(M, state);
+  const double finite = state.separation.sum() + res.traction.sum() + res.elastic_energy;
+  if (!(finite - finite == 0)) {
+    state.separation = separation0;
+    res = IncrementResult{};
+    return false;
+  }
+  state.substeps_accepted = state.substeps_rejected = state.status = 0;
+  return true;
+}
+
 // One attempt at the increment with the scheme of M.controls, from a valid
 // state and a finite increment.
 IncrementResult attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
   IncrementResult res;
+  // The explicit routines ask for no tangent; most of their increments, and
+  // the fallback chain's pieces, are elastic.
+  if (!tangent && elastic_increment(M, state, d, res)) return res;
   TangentTracker tracker;
   // The scheme is chosen once per increment; each lives on the stack.
   switch (M.controls.scheme) {
@@ -280,22 +304,6 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
 IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
   if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
   if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
-  if (!tangent && certainly_elastic(M, state, d)) {
-    // What integrate_with() makes of one elastic segment over all of d: the
-    // same sum and the same functions of the end state, no dissipation
-    // (x - x = +0, the result's defaults), no substeps.
-    const Vec3 separation0 = state.separation;
-    state.separation += d;
-    IncrementResult res;
-    res.traction = traction_of(M, state);
-    res.elastic_energy = elastic_energy(M, state);
-    const double finite = state.separation.sum() + res.traction.sum() + res.elastic_energy;
-    if (finite - finite == 0) {
-      state.substeps_accepted = state.substeps_rejected = state.status = 0;
-      return res;
-    }
-    state.separation = separation0;  // beyond double's range: the full path reports it
-  }
   const State start = state;
   const IncrementResult first = attempt(M, state, d, tangent);
   if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
