@@ -1,9 +1,5 @@
 #include "mortar/state.hpp"
 
-#include <cmath>
-#include <cstdint>
-#include <cstring>
-
 namespace mortar {
 
 const char* const kStateNames[kStateCount] = {
@@ -15,21 +11,6 @@ const char* const kStateNames[kStateCount] = {
 const char* const kLowStateNames[kPairedStateCount - kStateCount] = {
     "dp_n_lo", "dp_s1_lo", "dp_s2_lo", "w_I_lo", "w_II_lo", "w_III_lo",
     "d_n_lo",  "d_s_lo",   "delta_n_lo", "delta_s1_lo", "delta_s2_lo"};
-
-bool pair_consistent(float high, float low) {
-  if (!std::isfinite(high) || !std::isfinite(low)) return false;
-  const float h = std::fabs(high);
-  // nextafter(h, +inf) without the library call (it runs for 11 slots on
-  // every point-update): the next float up has the next bit pattern, for
-  // every finite h >= 0 (FLT_MAX's successor is +inf, 0's the least denormal).
-  std::uint32_t bits;
-  std::memcpy(&bits, &h, sizeof bits);
-  ++bits;
-  float next;
-  std::memcpy(&next, &bits, sizeof next);
-  const float spacing = next - h;
-  return std::fabs(low) <= spacing;
-}
 
 namespace {
 

@@ -252,9 +252,9 @@ struct ExplicitBlock {
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
     // The law's result in this routine's precision: a double beyond a float's
     // range would come back as infinity. Checked before anything is stored.
-    // The double routine's count is a constant, so that the copies below are
-    // inlined rather than calls of memcpy.
-    const int count = StateStorage<Real>::kSingle ? storage.count : mortar::kStateCount;
+    // Either count as a constant, so that the copies below are inlined rather
+    // than calls of memcpy.
+    const int count = storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
     Real end[mortar::kPairedStateCount];
     std::copy(st, st + count, end);
     storage.store(s, end);
