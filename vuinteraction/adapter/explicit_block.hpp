@@ -254,7 +254,7 @@ struct ExplicitBlock {
     // range would come back as infinity. Checked before anything is stored.
     // Either count as a constant, so that the copies below are inlined rather
     // than calls of memcpy.
-    const int count = storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
+    const int count = StateStorage<Real>::kSingle && storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
     Real end[mortar::kPairedStateCount];
     std::copy(st, st + count, end);
     storage.store(s, end);
