@@ -1,6 +1,7 @@
 #include "output/scene_plots.hpp"
 
 #include <fstream>
+#include <sstream>
 
 #include "input/input_error.hpp"
 #include "output/plots.hpp"
@@ -34,7 +35,9 @@ void energy_chart(std::ostream& g) {
 
 void wall_picture(std::ostream& g, int k, const std::string& label, double magnification) {
   const std::string stem = "snapshot_" + std::to_string(k);
-  g << "set title " << quoted("The wall at " + label + " (displacements x " + std::to_string(magnification) +
+  std::ostringstream factor;  // 50, not std::to_string's 50.000000
+  factor << magnification;
+  g << "set title " << quoted("The wall at " + label + " (displacements x " + factor.str() +
                               "; joints coloured by damage)")
     << "\nset key off\nset size ratio -1\nset xlabel \"x [mm]\"\nset ylabel \"y [mm]\"\n"
     << "set cbrange [0:1]\nset cblabel \"damage\"\nset palette defined (0 \"#d0d0d0\", 0.5 \"#E69F00\", 1 \"#D55E00\")\n"
