@@ -22,6 +22,8 @@
 //                  the reference, not with 1 call)
 //   vdP-1.0  1e-5: tight 1.1e-6 (1 call); 20 calls (8.2e-7) and default
 //                  (4.9e-5) are checked
+#include <algorithm>
+
 #include "splitting_check.hpp"
 
 using namespace mj_test::splitting;
@@ -45,7 +47,13 @@ std::vector<LeftOut> left_out_at_1e3() {
 }  // namespace
 
 TEST_CASE("Splitting: random paths with jumps, h = 1e-3 mm", "[splitting]") {
-  check_cells("random-jumps", all_cells(1e-3), left_out_at_1e3());
+  // M15 first: under the sanitizers only the first cell runs
+  // (splitting_check.hpp), and vdP -0.1's, whose worn joint stalls at the
+  // substep floor, takes minutes there.
+  std::vector<Cell> cells = all_cells(1e-3);
+  std::rotate(cells.begin(), std::find_if(cells.begin(), cells.end(), [](const Cell& c) { return c.set == "M15"; }),
+              cells.end());
+  check_cells("random-jumps", cells, left_out_at_1e3());
 }
 
 TEST_CASE("Splitting: random paths with jumps, h = 1e-4 and 1e-5 mm", "[splitting]") {

@@ -11,6 +11,7 @@
 #include "calibration/synthetic.hpp"
 #include "calibration/uncertainty.hpp"
 #include "paper_sets.hpp"
+#include "test_scale.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -60,6 +61,12 @@ TEST_CASE("calibration recovers the parameters that made the curves", "[calibrat
 // off). The fit's second start (fit.cpp, softening_alone) must find the
 // true basin: GIIC within 5 % and a misfit at the noise level.
 TEST_CASE("calibration of Almeida M15's curves does not stop where GIIC vanishes", "[calibration]") {
+  // About 600 simulated tests: minutes under the sanitizers, where the test
+  // above runs the same code (test_scale.hpp).
+  if (mj_test::property_scale() < 1) {
+    WARN("scaled run (MJ_PROPERTY_SCALE): the M15 calibration is left to the unscaled suite");
+    return;
+  }
   const Parameters truth = testing::almeida_m15();
   FitResult fit;
   const Calibration c = calibrate_synthetic(truth, 12, fit);
