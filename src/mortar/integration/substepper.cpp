@@ -120,17 +120,8 @@ Substepper::Landing Substepper::separation(const Point& N, double& dT) {
   const double s0 = surface_of(M, P.y).s_raw, s1 = surface_of(M, N.y).s_raw;
   if (separated(s0)) return Landing::none;
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
-  const bool below = g1 < -1e-9;
-  if (!below && !sep_cut_.active) return Landing::none;
-  sep_cut_.record(dT, g1, below, std::log(s0 / kSeparated));
-  if (std::abs(g1) > 1e-9 && sep_cuts_ < kMaxCrossingCuts) {
-    dT = sep_cut_.next(sep_cuts_);
-    ++sep_cuts_;
-    return Landing::cut;
-  }
-  sep_cuts_ = 0;
-  sep_cut_ = CrossingBracket{};
-  return separated(s1) ? Landing::lands : Landing::none;
+  return one_sided(sep_cut_, sep_cuts_, dT, std::log(s0 / kSeparated), g1, g1 < -1e-9, std::abs(g1) <= 1e-9,
+                   separated(s1));
 }
 
 // Complete normal damage inside the substep (docs/model.md 6, Decision -
@@ -144,18 +135,28 @@ Substepper::Landing Substepper::separation(const Point& N, double& dT) {
 Substepper::Landing Substepper::normal_completion(const Point& N, double& dT) {
   if (!P.y.open || !(P.y.dn < 1) || !(P.sigma[0] > 0) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
   const double g1 = N.sigma[0] / M.stress_scale;
-  const bool below = g1 < 0;
-  if (!below && !dn_cut_.active) return Landing::none;
-  dn_cut_.record(dT, g1, below, P.sigma[0] / M.stress_scale);
-  const bool landed = below && g1 >= -1e-9;
-  if (!landed && dn_cuts_ < kMaxCrossingCuts) {
-    dT = dn_cut_.next(dn_cuts_);
-    ++dn_cuts_;
+  const bool landed = g1 < 0 && g1 >= -1e-9;
+  return one_sided(dn_cut_, dn_cuts_, dT, P.sigma[0] / M.stress_scale, g1, g1 < 0, landed, landed);
+}
+
+// One trial substep of a one-sided bracket on the boundary function g (g0 at
+// the substep's start, g1 at its end, `past` when g1 lies beyond the
+// boundary): the first substep that goes past opens the bracket; until the
+// end is `within` tolerance (or kMaxCrossingCuts tries are spent) the next
+// size comes from the bracket; then the bracket closes and the substep
+// `lands` on the boundary or not.
+Substepper::Landing Substepper::one_sided(CrossingBracket& b, int& cuts, double& dT, double g0, double g1, bool past,
+                                          bool within, bool lands) {
+  if (!past && !b.active) return Landing::none;
+  b.record(dT, g1, past, g0);
+  if (!within && cuts < kMaxCrossingCuts) {
+    dT = b.next(cuts);
+    ++cuts;
     return Landing::cut;
   }
-  dn_cuts_ = 0;
-  dn_cut_ = CrossingBracket{};
-  return landed ? Landing::lands : Landing::none;
+  cuts = 0;
+  b = CrossingBracket{};
+  return lands ? Landing::lands : Landing::none;
 }
 
 // The implicit scheme's step that ends on the regime boundary (BoundaryStep):

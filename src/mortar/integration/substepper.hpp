@@ -44,6 +44,8 @@ class Substepper {
   };
   Landing separation(const Point& N, double& dT);
   Landing normal_completion(const Point& N, double& dT);
+  Landing one_sided(CrossingBracket& b, int& cuts, double& dT, double g0, double g1, bool past, bool within,
+                    bool lands);
   double end_on_boundary(const Point& N, double done);
 
   const Model& M;
