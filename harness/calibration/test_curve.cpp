@@ -25,11 +25,6 @@ const char* test_kind_name(TestKind k) {
 
 namespace {
 
-std::string trimmed(const std::string& s) {
-  const size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
-  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-}
-
 struct Metadata {
   std::string kind, sigma_n;
   int kind_line = 0, sigma_line = 0;

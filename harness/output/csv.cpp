@@ -61,14 +61,16 @@ std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
   std::string cell;
   std::istringstream in(line);
-  while (std::getline(in, cell, ',')) {
-    const size_t a = cell.find_first_not_of(" \t\r"), b = cell.find_last_not_of(" \t\r");
-    out.push_back(a == std::string::npos ? "" : cell.substr(a, b - a + 1));
-  }
+  while (std::getline(in, cell, ',')) out.push_back(trimmed(cell));
   if (!line.empty() && line.back() == ',') out.push_back("");
   return out;
 }
 }  // namespace
+
+std::string trimmed(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
 
 void write_run_row(std::ostream& out, const Sample& s) { write_values(out, run_row_values(s)); }
 

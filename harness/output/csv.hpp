@@ -31,6 +31,9 @@ struct CsvTable {
   std::vector<double> values(const std::string& name) const;
 };
 
+// s without its leading and trailing blanks (spaces, tabs, carriage returns).
+std::string trimmed(const std::string& s);
+
 // Reads a CSV; InputError with file and line for anything that is not a
 // finite number or a row of the wrong width.
 CsvTable read_csv(const std::string& path);
