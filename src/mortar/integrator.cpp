@@ -39,8 +39,8 @@ Mat3 continuum_tangent(const Model& M, const State& y, const Vec3& sigma) {
   const Flow f = flow_of(M, sigma, S, k.on_flow);
   if (yield_function(sigma, S) < -yield_tolerance(M, sigma) || !(f.denominator > 0)) return K.asDiagonal();
   // Eq. 20: dsigma = kS (dd - m dl), dl = dF . kS dd / denominator.
-  return Mat3(k.on_separation.asDiagonal()) -
-         f.k_A_m * f.dF.cwiseProduct(k.on_separation).transpose() / f.denominator;
+  const Mat3 Ks = k.separation_matrix();
+  return Ks - f.k_A_m * (f.dF.transpose() * Ks) / f.denominator;
 }
 
 IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d) {

@@ -34,8 +34,8 @@ inline std::vector<Cell> all_cells(double h) {
 
 // The subset of sets a family runs at the finer increments: three at
 // 1e-4 mm, two at 1e-5 mm, Table 1 and random ones, sets with short and with
-// long softening lengths. Random paths with jumps run on sets that are
-// splitting-invariant at 1e-3 mm (test_splitting_jumps.cpp names the others).
+// long softening lengths. Random paths with jumps, short paths of few
+// increments, run on all nine.
 inline std::vector<Cell> fine_cells(const std::string& family, double h) {
   struct Subset {
     const char* family;
@@ -46,7 +46,9 @@ inline std::vector<Cell> fine_cells(const std::string& family, double h) {
       {"cap", {"vdP-0.1", "M15", "rnd1"}, {"M34", "rnd2"}},
       {"open-shear-close", {"vdP-0.5", "Atk", "rnd1"}, {"M15", "rnd0"}},
       {"slip3d", {"vdP-1.0", "M34", "rnd1"}, {"vdP-0.1", "rnd2"}},
-      {"random-jumps", {"vdP-1.0", "M15", "Atk", "rnd0", "rnd1"}, {"vdP-1.0", "M15", "Atk", "rnd1"}},
+      {"random-jumps",
+       {"vdP-0.1", "vdP-0.5", "vdP-1.0", "M15", "M34", "Atk", "rnd0", "rnd1", "rnd2"},
+       {"vdP-0.1", "vdP-0.5", "vdP-1.0", "M15", "M34", "Atk", "rnd0", "rnd1", "rnd2"}},
   };
   std::vector<Cell> v;
   for (const Subset& s : subsets)

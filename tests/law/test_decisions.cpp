@@ -3,8 +3,10 @@
 // jump, snap-back, disintegration, the regularised potential (docs/model.md 5).
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 
+#include "mortar/integration/rate_statement.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
@@ -166,4 +168,35 @@ TEST_CASE("Decision: an open joint with no strength left disintegrates", "[decis
   REQUIRE(r.status.ok());
   CHECK(shear_norm(r.traction) <= M.tan_phi0 * std::abs(r.traction[0]) * (1 + 1e-6));
   CHECK(shear_norm(r.traction) >= M.tan_phir * std::abs(r.traction[0]) * (1 - 1e-6));
+}
+
+// docs/model.md 6, Decision - slip across the elastic slip: the rate
+// statement of an open joint on its growing shear branch turns the traction
+// as the secant relation (Eq. 1, tau parallel to the elastic slip) does
+// after settle(). With the full ks across the elastic slip the stage turned
+// tau by ks ds times more than settle() then kept, so the Heun pair's error
+// estimate saw a swing that no substep size removed (a worn open joint took
+// 10^4 substeps per call at the floor, and its answer depended on the cuts).
+TEST_CASE("Decision: slip across the elastic slip of an open joint turns the traction on the shear secant",
+          "[decision][damage]") {
+  const Model M = make_model_checked(almeida_m15());
+  Point P{damaged_open_joint(M), Vec3::Zero()};
+  P.sigma = traction_of(M, P.y);
+  REQUIRE(yield_of(M, P) > -1e-6 * M.p.ft0);  // on the surface: the slip loads it
+  const double ds = P.y.ds;
+  for (double angle_deg : {30.0, 60.0, 90.0, 120.0}) {
+    const double a = angle_deg * M_PI / 180, h = 1e-7;
+    const Vec3 dd(0, h * std::cos(a), h * std::sin(a));
+    const Rates r = stage(M, P, dd);
+    Point Q = P;
+    add(Q, r, 1.0);
+    Q.y.separation += dd;
+    const Vec3 rate_end = Q.sigma;
+    settle(M, Q, P.y.elastic_separation(), r.grow);
+    INFO("slip at " << angle_deg << " degrees to the elastic slip, ds = " << ds);
+    // The part across the elastic slip: the secant ks (1 - ds), not ks.
+    CHECK(std::abs(r.dsigma[2] - M.p.ks * (1 - ds) * dd[2]) <= 1e-9 * M.p.ks * h);
+    // The stage's end agrees with settle()'s to first order in the step.
+    CHECK((Q.sigma - rate_end).norm() <= 1e-3 * r.dsigma.norm() + 1e-12);
+  }
 }

@@ -19,7 +19,7 @@ Outcome solve_on_branches(const Model& M, const Point& P, const Surface& S, cons
   b.k = rate_stiffness_over(M, P.y, dd, grow_n, grow_s);
   b.grow_n = grow_n;
   b.grow_s = grow_s;
-  const Vec3 trial = P.sigma + b.k.on_separation.cwiseProduct(dd);
+  const Vec3 trial = P.sigma + b.k.times_separation(dd);
   if (yield_function(trial, S) <= yield_tolerance(M, trial)) return Outcome::unloading;
   b.problem = make_local_problem(M, P.sigma, trial, b.k.on_flow, kappa);
   const Flow fP = flow_of(M, P.sigma, S, b.k.on_flow);

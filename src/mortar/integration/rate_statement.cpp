@@ -31,7 +31,8 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
                    Vec3* dp = nullptr) {
   const RateStiffness k = rate_stiffness_over(M, P.y, dd, grow_n, grow_s);
   const Flow f = flow_of(M, P.sigma, S, k.on_flow);
-  const double num = f.dF.dot(k.on_separation.cwiseProduct(dd));
+  const Vec3 k_dd = k.times_separation(dd);
+  const double num = f.dF.dot(k_dd);
   Rates r;
   // Unloading inside the step, or a flow that no stiffness can feed (open
   // and fully damaged along it): secant elasticity.
@@ -45,7 +46,7 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
     return r;
   }
   r = along_flow(M, P.sigma, f, num / f.denominator);
-  r.dsigma += k.on_separation.cwiseProduct(dd);
+  r.dsigma += k_dd;
   r.plastic = true;
   if (dp) *dp = r.dplastic;
   return r;

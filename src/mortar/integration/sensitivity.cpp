@@ -81,7 +81,7 @@ Sensitivity backward_euler_sensitivity(const Model& M, const Point& P, const Vec
     }
   }
   const double dl = b.solution.unknowns().dl;
-  const Mat3 Dtrial = DP.sigma + b.k.on_separation.asDiagonal() * Ddd + dd.asDiagonal() * Dk;
+  const Mat3 Dtrial = DP.sigma + b.k.separation_matrix() * Ddd + dd.asDiagonal() * Dk;
   Mat73 B = Mat73::Zero();
   B.middleRows<3>(unknown::sigma_n) = -Dtrial + dl * b.end.m.asDiagonal() * Dk;  // k_sep = k_flow on a frozen branch
   B.middleRows<3>(unknown::work_I) = -DP.kappa;

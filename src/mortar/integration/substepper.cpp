@@ -53,7 +53,9 @@ double Substepper::run(const Vec3& d) {
     }
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
     const Landing sep = separation(*a.end, dT);
-    if (sep == Landing::cut || normal_completion(*a.end, dT) == Landing::cut) continue;
+    if (sep == Landing::cut) continue;
+    const Landing normal = normal_completion(*a.end, dT);
+    if (normal == Landing::cut) continue;
     const bool separates = sep == Landing::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
     if (crossing_kind == Crossing::from_boundary) {
@@ -66,6 +68,10 @@ double Substepper::run(const Vec3& d) {
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
     scheme.before_settle(Q);
     settle(M, Q, P.y.elastic_separation(), scheme.traits.branches_from_first_stage ? r1.grow : Branches{});
+    if (normal == Landing::lands) {
+      complete_normal_damage(M, Q.y);
+      Q.sigma = traction_of(M, Q.y);
+    }
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
@@ -81,6 +87,11 @@ double Substepper::run(const Vec3& d) {
       at_boundary_ = true;
       return std::min(T, 1.0);
     }
+    // The normal traction given up on completing the normal damage leaves
+    // the point inside the surface (by up to tan(phi) 1e-7 kn delta_e_n):
+    // what follows is decided afresh, elastic up to the surface first, as a
+    // call that starts there would (increment.cpp).
+    if (normal == Landing::lands) return std::min(T, 1.0);
     dT = scheme.next_size(dT);
   }
   return 1;
@@ -126,17 +137,30 @@ Substepper::Landing Substepper::separation(const Point& N, double& dT) {
 
 // Complete normal damage inside the substep (docs/model.md 6, Decision -
 // complete normal damage): on its growing branch an open joint's normal
-// traction can fall through zero while the joint stays open, where settle()
-// sets dn = 1 and the normal stops carrying (rate stiffness 0). Past that
-// kink the Heun pair straddles two rate problems and its error estimate,
-// taken before settle(), cannot see it; so the substep is shortened to end
-// where sigma_n reaches 0 from above (regula falsi on the substep size,
-// bisection as a safeguard), within 1e-9 ft0 below it.
+// traction falls towards zero while the joint stays open, and only
+// asymptotically on a worn joint that opens while sliding. What is left is
+// taken as none once it is below kSeparated of a traction scale, as s is at
+// complete separation: ft0, or, while the joint slides, the undamaged
+// traction kn delta_e_n weighted by the shear share of the flow |tau|/R (in
+// mode I the threshold is kSeparated ft0, where the joint separates). Then
+// dn = 1 and the normal stops carrying (rate stiffness 0). Past that kink
+// the Heun pair straddles two rate problems and its error estimate, taken
+// before settle(), cannot see it; so the substep that crosses is shortened to
+// end on it from above (regula falsi on the substep size, bisection as a
+// safeguard), within 1e-9 ft0 below it.
 Substepper::Landing Substepper::normal_completion(const Point& N, double& dT) {
-  if (!P.y.open || !(P.y.dn < 1) || !(P.sigma[0] > 0) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
-  const double g1 = N.sigma[0] / M.stress_scale;
+  if (!P.y.open || !(P.y.dn < 1) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
+  auto g = [&](const Point& X) {
+    const double tau = shear_norm(X.sigma), R = std::hypot(surface_of(M, X.y).alpha, tau);
+    const double sliding = R > 0 ? tau / R : 0.0;
+    const double left = kSeparated * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
+    return (X.sigma[0] - left) / M.stress_scale;
+  };
+  const double g0 = g(P);
+  if (!(g0 > 0)) return Landing::none;
+  const double g1 = g(N);
   const bool landed = g1 < 0 && g1 >= -1e-9;
-  return one_sided(dn_cut_, dn_cuts_, dT, P.sigma[0] / M.stress_scale, g1, g1 < 0, landed, landed);
+  return one_sided(dn_cut_, dn_cuts_, dT, g0, g1, g1 < 0, landed, landed);
 }
 
 // One trial substep of a one-sided bracket on the boundary function g (g0 at

@@ -17,6 +17,12 @@ void disintegrate_if_no_strength(const Model& M, State& y) {
   y.ds = 1;
 }
 
+void complete_normal_damage(const Model& M, State& y) {
+  const double e = y.elastic_separation()[0];
+  y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e * e;
+  y.dn = 1;
+}
+
 void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow) {
   if (y.open) {
     const Vec3 e = y.elastic_separation();

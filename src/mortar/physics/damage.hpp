@@ -62,6 +62,12 @@ inline bool separated(double s_raw) { return s_raw <= kSeparated * (1 + 2e-9); }
 // dissipation.
 void disintegrate_if_no_strength(const Model& M, State& y);
 
+// An open joint whose normal traction, falling on its damage-growing branch,
+// has reached what is taken as none (Substepper::normal_completion;
+// docs/model.md 6, Decision - complete normal damage inside a substep):
+// dn = 1, the elastic energy of the normal released as damage dissipation.
+void complete_normal_damage(const Model& M, State& y);
+
 // Which components of an open joint are on their damage-growing branch in a
 // substep (docs/model.md 6, Decision - open-regime branches); a component on
 // its frozen secant keeps its damage exactly.

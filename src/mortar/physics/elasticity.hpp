@@ -3,6 +3,8 @@
 // Knows nothing of integration schemes.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "mortar/parameters.hpp"
@@ -18,9 +20,41 @@ namespace mortar {
 // decrease; where it would, damage is frozen (it never decreases) and the
 // component follows its secant. A component whose damage is complete carries
 // no traction in the open regime, so both of its stiffnesses are zero.
+//
+// The shear damage is one scalar acting on the slip vector (Eq. 1:
+// tau = ks (1 - ds) delta_e_s), so the traction stays parallel to the elastic
+// slip. On the growing branch only the slip along the elastic slip grows the
+// damage; slip across it turns the traction with the secant ks (1 - ds), as
+// the derivative of Eq. 1 at fixed ds says (docs/model.md 6, Decision - slip
+// across the elastic slip). The flow needs no such split: m_s is parallel to
+// tau, hence to delta_e_s.
 struct RateStiffness {
-  Vec3 on_separation;  // multiplies the separation increment
+  Vec3 on_separation;  // multiplies the separation increment (along the elastic slip, for the shear)
   Vec3 on_flow;        // multiplies m dl
+  double across_drop = 0;    // ks ds: taken off on_separation for slip across the elastic slip
+  double axis[2] = {0, 0};   // the unit elastic slip, where across_drop > 0
+
+  // The traction change the separation increment dd drives.
+  Vec3 times_separation(const Vec3& dd) const {
+    Vec3 r = on_separation.cwiseProduct(dd);
+    if (across_drop > 0) {
+      const double along = dd[1] * axis[0] + dd[2] * axis[1];
+      r[1] -= across_drop * (dd[1] - along * axis[0]);
+      r[2] -= across_drop * (dd[2] - along * axis[1]);
+    }
+    return r;
+  }
+  // The same as a matrix (tangents).
+  Eigen::Matrix3d separation_matrix() const {
+    Eigen::Matrix3d K = on_separation.asDiagonal();
+    if (across_drop > 0) {
+      K(1, 1) -= across_drop * (1 - axis[0] * axis[0]);
+      K(2, 2) -= across_drop * (1 - axis[1] * axis[1]);
+      K(1, 2) += across_drop * axis[0] * axis[1];
+      K(2, 1) += across_drop * axis[0] * axis[1];
+    }
+    return K;
+  }
 };
 inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n = true, bool grow_s = true) {
   const Parameters& p = M.p;
@@ -35,6 +69,13 @@ inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n 
   component(p.ks, p.bs, y.ds, grow_s, r.on_separation[1], r.on_flow[1]);
   r.on_separation[2] = r.on_separation[1];
   r.on_flow[2] = r.on_flow[1];
+  const Vec3 e = y.elastic_separation();
+  const double es = std::hypot(e[1], e[2]);
+  if (grow_s && y.ds > 0 && y.ds < 1 && es > 0) {
+    r.across_drop = p.ks * y.ds;
+    r.axis[0] = e[1] / es;
+    r.axis[1] = e[2] / es;
+  }
   return r;
 }
 
