@@ -6,7 +6,7 @@
 //
 // Every cut of every cell is checked: the decisions on slip across the
 // elastic slip and on complete normal damage (docs/model.md 6) brought the
-// worn open joint of rnd2 from 1.1e-1 of peak to 2.5e-8 (tight) and the jumps
+// worn open joint of rnd2 from 1.1e-1 of peak to 1.8e-9 (tight) and the jumps
 // taken as one call (vdP -0.1, -0.5, M34, Atk) from 2.6e-6 ... 3.7e-4 below
 // 1e-6, with the tight controls' smallest substep at 1e-6 of the call
 // (splitting_paths.hpp).

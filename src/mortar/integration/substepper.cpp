@@ -88,7 +88,7 @@ double Substepper::run(const Vec3& d) {
       return std::min(T, 1.0);
     }
     // The normal traction given up on completing the normal damage leaves
-    // the point inside the surface (by up to tan(phi) 1e-7 kn delta_e_n):
+    // the point inside the surface (by up to tan(phi) times the threshold):
     // what follows is decided afresh, elastic up to the surface first, as a
     // call that starts there would (increment.cpp).
     if (normal == Landing::lands) return std::min(T, 1.0);
