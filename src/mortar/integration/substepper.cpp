@@ -19,6 +19,7 @@ double Substepper::run(const Vec3& d) {
   sep_cut_ = CrossingBracket{};
   sep_cuts_ = 0;
   double T = 0, dT = 1;
+  bool unloaded = false;
   // Every pass of the loop counts against the budget, so no path through
   // it (cuts, relaxations) can spin forever.
   for (long pass = 0; T < 1; ++pass) {
@@ -30,6 +31,11 @@ double Substepper::run(const Vec3& d) {
       st.failure = f;
       return T;
     }
+    // An elastic substep (unloading) left the point inside the surface: where
+    // it yields again is the segment's to find (the elastic-plastic
+    // intersection, increment.cpp), as for a call that starts there; the
+    // rate statement from inside would flow at once and keep the gap.
+    if (unloaded && yield_of(M, P) < -yield_tolerance(M, P.sigma)) return T;
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
     const Rates r1 = stage(M, P, dd);
@@ -82,16 +88,17 @@ double Substepper::run(const Vec3& d) {
     }
     scheme.commit(P, Q, dd, T, dT, lands);
     ++st.substeps_accepted;
+    unloaded = !r1.plastic;
     T += dT;
     if (switch_here) {
       at_boundary_ = true;
       return std::min(T, 1.0);
     }
-    // The normal traction given up on completing the normal damage leaves
-    // the point inside the surface (by up to tan(phi) times the threshold):
-    // what follows is decided afresh, elastic up to the surface first, as a
-    // call that starts there would (increment.cpp).
-    if (normal == Landing::lands) return std::min(T, 1.0);
+    // The normal traction given up on completing the normal damage (by up to
+    // tan(phi) times the threshold), or all of it on separating, leaves the
+    // point inside the surface: what follows is decided afresh, elastic up to
+    // the surface first, as a call that starts there would (increment.cpp).
+    if (normal == Landing::lands || separates) return std::min(T, 1.0);
     dT = scheme.next_size(dT);
   }
   return 1;

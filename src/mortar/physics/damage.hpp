@@ -47,7 +47,11 @@ inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, c
 // depends on how the increment is cut. At 1e-7 the traction left is below
 // 1e-7 ft0 (under the 1e-6-of-peak splitting tolerance) and the separation is
 // a well-conditioned point to land a substep on (relative change of s per
-// substep >> round-off).
+// substep >> round-off). Its place carries the round-off of the summed works
+// (s = 1 - wI/GIC - wII/GIIC: about 1e-13 of wI after 1e5 substeps, amplified
+// by 1/s), and the plastic opening at which contact is regained grows by
+// u ln(10) per decade of s_sep, so s_sep is a model decision, not a tolerance
+// (docs/model.md 6).
 constexpr double kSeparated = 1e-7;
 
 // Whether an open joint's strength s_raw has reached kSeparated (within the
@@ -67,6 +71,7 @@ void disintegrate_if_no_strength(const Model& M, State& y);
 // docs/model.md 6, Decision - complete normal damage inside a substep):
 // dn = 1, the elastic energy of the normal released as damage dissipation.
 void complete_normal_damage(const Model& M, State& y);
+
 
 // Which components of an open joint are on their damage-growing branch in a
 // substep (docs/model.md 6, Decision - open-regime branches); a component on
