@@ -111,7 +111,7 @@ void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u) {
     CalibratedParameter& e = cal[name.c_str()];
     e.stage = Stage::not_determined;
     e.std_error = NAN;
-    e.how = "held at its starting value (" + e.how + "): the data determine only a combination" + h.substr(h.find('('));
+    e.how = "held at its starting value (" + e.how + "): the data determine only a combination " + h.substr(h.find('('));
   }
 }
 

@@ -137,20 +137,6 @@ int main(int argc, char** argv) {
     recovery("van der Pluijm (m, n of -0.5 MPa)", same(van_der_pluijm(-0.5)), 0.03, 14);
     return 0;
   }
-  if (argc == 2 && !std::strcmp(argv[1], "debug")) {
-    {
-      const Parameters p = testing::van_der_pluijm(-0.5);
-      const auto plan = standard_programme(p, 3000);
-      const TestCurve c = synthetic_curve(p, plan[3], 0.0, 1, "x");
-      for (size_t i = 0; i < c.x.size(); ++i) if (i % 50 == 0 || c.y[i] < 0.7) std::printf("%zu %.5g %.5g\n", i, c.x[i], c.y[i]);
-    }
-    const auto curves = curves_of(same(testing::van_der_pluijm(-0.5)), 0.01, 30, 11);
-    const DirectResult d = apply_direct_rules(curves);
-    for (auto& p : d.peaks) std::printf("%s %g peak %g residual %g\n", p.curve.c_str(), p.sigma_n, p.peak, p.residual);
-    for (int i = 0; i < kParameterCount; ++i) std::printf("%s %g %s\n", kParameterInfo[size_t(i)].name, d.calibration.entries[size_t(i)].value, d.calibration.entries[size_t(i)].how.c_str());
-    for (auto& c : curves) { std::printf("%s:", c.name.c_str()); for (size_t i = 0; i < c.x.size(); ++i) std::printf(" (%.4g,%.3g)", c.x[i], c.y[i]); std::printf("\n"); }
-    return 0;
-  }
   if (argc == 2 && !std::strcmp(argv[1], "direct")) {
     direct_study();
     return 0;
