@@ -8,6 +8,8 @@
 
 #include <Eigen/Dense>
 
+#include "calibration/curve_reading.hpp"
+#include "calibration/tension_rules.hpp"
 #include "input/input_error.hpp"
 
 namespace mortar::harness {
@@ -30,83 +32,14 @@ const char* stage_name(Stage s) {
 
 namespace {
 
-// A value and its standard error.
-struct Estimate {
-  double value = 0, se = NAN;
-};
-
-// Least squares slope through the origin of the points (x_i, y_i).
-Estimate slope_through_origin(const std::vector<double>& x, const std::vector<double>& y) {
-  double sxx = 0, sxy = 0;
-  for (size_t i = 0; i < x.size(); ++i) sxx += x[i] * x[i], sxy += x[i] * y[i];
-  Estimate k{sxy / sxx};
-  if (x.size() < 2) return k;
-  double ssr = 0;
-  for (size_t i = 0; i < x.size(); ++i) ssr += std::pow(y[i] - k.value * x[i], 2);
-  k.se = std::sqrt(ssr / double(x.size() - 1) / sxx);
-  return k;
-}
-
-size_t index_of_peak(const std::vector<double>& y, size_t end) {
-  return static_cast<size_t>(std::max_element(y.begin(), y.begin() + long(end)) - y.begin());
-}
-
-// The first loading branch: up to the first reversal of the abscissa.
-size_t first_branch_end(const TestCurve& c) {
-  for (size_t i = 1; i < c.x.size(); ++i)
-    if (c.x[i] < c.x[i - 1]) return i;
-  return c.x.size();
-}
-
-// The points of the elastic branch: before the peak, below 90 % of it (the
-// law is elastic up to the peak; the margin keeps a noisy peak point out).
-void elastic_points(const TestCurve& c, std::vector<double>& x, std::vector<double>& y) {
-  const size_t end = first_branch_end(c), peak = index_of_peak(c.y, end);
-  for (size_t i = 0; i < peak; ++i)
-    if (c.x[i] > 0 && c.y[i] <= 0.9 * c.y[peak]) x.push_back(c.x[i]), y.push_back(c.y[i]);
-}
-
-Estimate stiffness(const std::vector<TestCurve>& curves, bool shear) {
+Estimate shear_stiffness(const std::vector<TestCurve>& curves) {
   std::vector<double> x, y;
   for (const TestCurve& c : curves)
-    if (c.shear() == shear) elastic_points(c, x, y);
+    if (c.shear()) elastic_points(c, x, y);
   if (x.size() < 2)
-    throw InputError(std::string("the ") + (shear ? "shear" : "tension") +
-                     " curves have fewer than 2 points on their elastic branch (before the peak, below 90 % of it): "
-                     "the initial slope gives " + (shear ? "ks" : "kn"));
+    throw InputError("the shear curves have fewer than 2 points on their elastic branch (before the peak, below 90 % "
+                     "of it): the initial slope gives ks");
   return slope_through_origin(x, y);
-}
-
-// The post-peak tension branch, ln(sigma) = ln(ft0) - (ft0/GIC) d_in, weighted
-// by sigma^2 (noise on sigma is additive, so var(ln sigma) ~ 1/sigma^2).
-void tension_rules(const std::vector<TestCurve>& curves, double kn, Calibration& cal) {
-  double sw = 0, sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
-  for (const TestCurve& c : curves) {
-    if (c.shear()) continue;
-    const size_t peak = index_of_peak(c.y, c.y.size());
-    for (size_t i = peak + 1; i < c.x.size(); ++i) {
-      if (c.y[i] <= 0.05 * c.y[peak]) continue;  // the log of noise
-      const double w = c.y[i] * c.y[i], d_in = c.x[i] - c.y[i] / kn, z = std::log(c.y[i]);
-      sw += w, sx += w * d_in, sy += w * z, sxx += w * d_in * d_in, sxy += w * d_in * z, n += 1;
-    }
-  }
-  if (n < 3) throw InputError("the tension curves have fewer than 3 points after the peak above 5 % of it: "
-                              "their softening gives ft0 and GIC");
-  const double det = sw * sxx - sx * sx, b = -(sw * sxy - sx * sy) / det, a = (sy + b * sx) / sw;
-  // Standard errors of a and b from the weighted residuals.
-  double ssr = 0;
-  for (const TestCurve& c : curves) {
-    if (c.shear()) continue;
-    const size_t peak = index_of_peak(c.y, c.y.size());
-    for (size_t i = peak + 1; i < c.x.size(); ++i)
-      if (c.y[i] > 0.05 * c.y[peak])
-        ssr += c.y[i] * c.y[i] * std::pow(std::log(c.y[i]) - a + b * (c.x[i] - c.y[i] / kn), 2);
-  }
-  const double s2 = ssr / (n - 2), se_a = std::sqrt(s2 * sxx / det), se_b = std::sqrt(s2 * sw / det);
-  const double ft0 = std::exp(a), GIC = ft0 / b;
-  cal["ft0"] = {ft0, Stage::direct, "peak of the tension softening in closed form (model.md 4)", ft0 * se_a};
-  cal["GIC"] = {GIC, Stage::direct, "area under the tension curve in closed form (model.md 4)",
-                GIC * std::hypot(se_a, se_b / b)};
 }
 
 ShearPeak shear_peak(const TestCurve& c) {
@@ -173,8 +106,22 @@ void hyperbola_rules(const std::vector<Level>& levels, bool ft0_known, double sd
     else A.row(i) << 1, s, s * s;
   }
   const Eigen::MatrixXd normal = A.transpose() * w.asDiagonal() * A;
-  const Eigen::VectorXd coef = normal.ldlt().solve(A.transpose() * w.asDiagonal() * y);
-  const Eigen::MatrixXd cov = normal.inverse();
+  Eigen::VectorXd coef = normal.ldlt().solve(A.transpose() * w.asDiagonal() * y);
+  Eigen::MatrixXd cov = normal.inverse();
+  std::string how = "hyperbola of Eqs. 2-3 through the peak shear strengths";
+  // The law needs phi0 >= phir (docs/model.md 2). Peaks close to a straight
+  // line in sigma_n (small curvature, tan^2 phi0, against the scatter) can
+  // put the unconstrained curvature below tan^2 phir or below zero: then the
+  // least squares on that bound.
+  const double floor = std::pow(std::tan(cal["phir"].value * kDegree), 2);
+  if (coef[unknowns - 1] < floor) {
+    const Eigen::MatrixXd B = A.leftCols(unknowns - 1), nb = B.transpose() * w.asDiagonal() * B;
+    coef.head(unknowns - 1) = nb.ldlt().solve(B.transpose() * w.asDiagonal() * (y - floor * A.col(unknowns - 1)));
+    coef[unknowns - 1] = floor;
+    cov.setZero();
+    cov.topLeftCorner(unknowns - 1, unknowns - 1) = nb.inverse();
+    how += ", on the law's bound phi0 = phir (unconstrained, the peaks' curvature fell below tan^2 phir)";
+  }
   auto c0 = [](const Eigen::VectorXd& k) { return std::sqrt(k[0]); };
   auto phi0 = [&](const Eigen::VectorXd& k) { return std::atan(std::sqrt(k[ft0_known ? 1 : 2])) / kDegree; };
   auto ft0_of = [&](const Eigen::VectorXd& k) {  // the root below c0/tan(phi0): D f^2 + B f + A = 0
@@ -184,7 +131,6 @@ void hyperbola_rules(const std::vector<Level>& levels, bool ft0_known, double sd
     throw InputError("the peak shear strengths do not lie on a hyperbola of Eqs. 2-3 (c0^2 = " +
                      std::to_string(coef[0]) + ", tan^2 phi0 = " + std::to_string(coef[unknowns - 1]) +
                      "): check the sigma_n lines and the peaks");
-  const std::string how = "hyperbola of Eqs. 2-3 through the peak shear strengths";
   cal["c0"] = {c0(coef), Stage::refined, how, propagated(c0, coef, cov)};
   cal["phi0"] = {phi0(coef), Stage::refined, how, propagated(phi0, coef, cov)};
   if (!ft0_known) cal["ft0"] = {ft0_of(coef), Stage::refined, how + " (no tension curve)", propagated(ft0_of, coef, cov)};
@@ -287,18 +233,18 @@ DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {
   if (levels.size() < 2 || (!tension && levels.size() < 3))
     throw InputError("the data hold shear curves at " + std::to_string(levels.size()) +
                      " normal stress(es): the hyperbola needs at least 2 with a tension curve, 3 without one");
-  const Estimate ks = stiffness(curves, true);
+  const Estimate ks = shear_stiffness(curves);
   cal["ks"] = {ks.value, Stage::direct, "initial slope of the shear curves", ks.se};
   if (tension) {
-    const Estimate kn = stiffness(curves, false);
-    cal["kn"] = {kn.value, Stage::direct, "initial slope of the tension curves", kn.se};
-    tension_rules(curves, kn.value, cal);
+    TensionRules t = tension_rules(curves);
+    cal["kn"] = t.kn, cal["ft0"] = t.ft0, cal["GIC"] = t.GIC;
+    cal.notes.insert(cal.notes.end(), t.notes.begin(), t.notes.end());
   }
   // Noise-free data (synthetic) would give zero weights' inverse: a floor
   // of 1e-4 of the largest peak (levels in sigma_n order) keeps the regression defined.
   const double sd = std::max(point_scatter(curves, ks.value), 1e-4 * levels.front().peak);
-  hyperbola_rules(levels, tension, sd, cal);
   residual_rule(levels, sd, cal);
+  hyperbola_rules(levels, tension, sd, cal);
   softening_start(curves, tension, cal);
   dilatancy_start(curves, cal);
   fill_placeholders(tension, cal);

@@ -2,13 +2,16 @@
 // directly (the paper's "calibration methods ... using common test data and
 // physical rules"), each by a regression on the data points with its standard
 // error from that regression:
-//  - kn, ks: slopes through the origin of the elastic branches (Eq. 1: the law
-//    is elastic up to the peak);
-//  - ft0, GIC: the tension curve in closed form, sigma = ft0 exp(-ft0 d_in / GIC)
-//    with d_in = d - sigma/kn (docs/model.md 4): ft0 is its peak, GIC its area;
+//  - ks: the slope through the origin of the shear curves' elastic branches
+//    (Eq. 1: the law is elastic up to the peak);
+//  - kn, ft0, GIC: the tension curve in closed form, elastic to the peak, then
+//    sigma = ft0 exp(-ft0 d_in / GIC) with d_in = d - sigma/kn (docs/model.md
+//    4), by least squares on all its points; snap-back included
+//    (calibration/tension_rules.hpp);
 //  - c0, phi0 (and ft0 without a tension test): the hyperbola of Eqs. 2-3
 //    through the peak shear strengths, tau_p^2 = c0^2 - (c0^2/ft0 + ft0 tan^2 phi0)
-//    sigma_n + tan^2 phi0 sigma_n^2, linear in its coefficients;
+//    sigma_n + tan^2 phi0 sigma_n^2, linear in its coefficients, with
+//    phi0 >= phir (docs/model.md 2);
 //  - phir: the residual strengths, tau_r = tan(phir) |sigma_n| (Eq. 6 worn out);
 //  - psi0 (a starting value for the fit): the initial dilatancy after the
 //    peak, d(uplift)/d(plastic slip) = tan(psi) sqrt(alpha^2 + tau^2)/|tau| (docs/model.md 5).

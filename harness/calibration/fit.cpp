@@ -272,9 +272,14 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
     if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined)
       w[long(softening.size())] = v[long(k)], softening.push_back(fit.unknowns[k]);
   w.conservativeResize(long(softening.size()));
-  const Outcome first = softening_alone(residuals, softening, w, o);
-  for (size_t k = 0, j = 0; k < fit.unknowns.size(); ++k)
-    if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined) v[long(k)] = first.value[long(j++)];
+  // (Nothing to do first when the data hold every softening parameter at
+  // its placeholder.)
+  Outcome first;
+  if (!softening.empty()) {
+    first = softening_alone(residuals, softening, w, o);
+    for (size_t k = 0, j = 0; k < fit.unknowns.size(); ++k)
+      if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined) v[long(k)] = first.value[long(j++)];
+  }
   const Outcome all_at_once = least_squares(residuals, fit.unknowns, v, o);
   fit.value = all_at_once.value;
   fit.iterations = first.iterations + all_at_once.iterations;

@@ -27,7 +27,8 @@ struct SyntheticTest {
 
 // The programme used by the tests and the shipped example: tension to about
 // 3 % of ft0, and monotonic shear at sigma_n = -0.1, -0.5, -1.0 MPa to a slip
-// that wears the joint out (from GIIC/c0), with dilatancy.
+// that wears the joint out (the elastic slip to the peak, then 4 GIIC/c0),
+// with dilatancy.
 std::vector<SyntheticTest> standard_programme(const Parameters& p, int points);
 
 // The law's curve, dense (about 600 increments), resampled at `points` points

@@ -92,6 +92,14 @@ void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u) {
     e.std_error = u.std_error[long(k)];
     if (e.stage != Stage::refined) e.stage = Stage::fit, e.how = "least squares on the whole curves";
     else e.how += ", refined by least squares on the whole curves";
+    // A value on its bound (within 1 %) is where the bounds stopped the
+    // fit, not where the data put it: the one-set misfit of curves whose m
+    // and n differ by level ends so (m at 1e5, n at 1 on van der Pluijm's).
+    const FitUnknown& f = fit.unknowns[k];
+    if (e.value <= 1.01 * f.lo || e.value >= f.hi / 1.01)
+      cal.notes.push_back(f.label() + " = " + std::to_string(e.value) + " is on its bound [" + std::to_string(f.lo) +
+                          ", " + std::to_string(f.hi) + "]: the fit was stopped there, not by the data; its value and "
+                          "standard error are not estimates (if m or n, compare the misfit of m and n per sigma_n)");
     if (!(e.std_error <= kPoorlyDetermined * std::abs(e.value)))
       cal.notes.push_back(std::string(kParameterInfo[size_t(fit.unknowns[k].index)].name) +
                           " is poorly determined by these data (relative standard error " +
@@ -103,7 +111,7 @@ void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u) {
     CalibratedParameter& e = cal[name.c_str()];
     e.stage = Stage::not_determined;
     e.std_error = NAN;
-    e.how = "held at its starting value (" + e.how + "): the data determine only a combination" + h.substr(h.find('('));
+    e.how = "held at its starting value (" + e.how + "): the data determine only a combination " + h.substr(h.find('('));
   }
 }
 

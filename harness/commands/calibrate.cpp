@@ -4,10 +4,8 @@
 #include <ostream>
 #include <set>
 
-#include "calibration/direct_rules.hpp"
-#include "calibration/fit.hpp"
+#include "calibration/pipeline.hpp"
 #include "calibration/report.hpp"
-#include "calibration/uncertainty.hpp"
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "output/plots.hpp"
@@ -64,32 +62,21 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
   if (fs::exists(o.out_dir) && !fs::is_directory(o.out_dir))
     throw InputError("--out " + o.out_dir + ": exists and is not a directory");
   fs::create_directories(o.out_dir);
-  const DirectResult direct = apply_direct_rules(curves);
-  FitOptions fo;
-  fo.simulation.increments = o.increments;
-  fo.progress = progress_line(err, "one set", o.quiet);
-  const FitResult one = fit_softening(curves, direct.calibration, fo);
-  const Uncertainty u = uncertainty_from(one.jacobian, one.residuals);
-  CalibrationReport report{&curves, &direct, direct.calibration, &one, &u};
-  apply_fit(report.final, one, u);
-  const bool tension = report.final["kn"].stage == Stage::direct;
-  fill_placeholders(tension, report.final);
-  FitResult per;
-  Uncertainty per_u;
-  if (o.per_sigma_n) {
-    fo.per_sigma_n = true;
-    fo.progress = progress_line(err, "m and n per sigma_n", o.quiet);
-    // From the one set's optimum: the same unknowns, m and n split by level.
-    const Calibration& from = report.final;
-    per = fit_softening(curves, from, fo);
-    per_u = uncertainty_from(per.jacobian, per.residuals);
-    report.per_level = &per, report.per_level_uncertainty = &per_u;
-    write_per_level_files(o.out_dir, curves, per, from.values());
+  CalibrationSettings settings;
+  settings.fit.simulation.increments = o.increments;
+  settings.fit.progress = progress_line(err, "one set", o.quiet);
+  settings.per_sigma_n = o.per_sigma_n;
+  settings.per_level_progress = progress_line(err, "m and n per sigma_n", o.quiet);
+  const CalibrationRun run = calibrate_curves(curves, settings);
+  CalibrationReport report{&curves, &run.direct, run.final, &run.one_set, &run.one_set_uncertainty};
+  if (run.per_level_fitted) {
+    report.per_level = &run.per_level, report.per_level_uncertainty = &run.per_level_uncertainty;
+    write_per_level_files(o.out_dir, curves, run.per_level, run.per_level_base);
   }
   write_parameter_file(o.out_dir + "/params.toml", report.final.values(),
                        {"Calibrated by masonry-joint calibrate from " + o.data_dir,
                         "Values, standard errors and how each was set: report.md"});
-  write_fit_curves(o.out_dir, curves, one, direct.calibration.values(), fo.simulation);
+  write_fit_curves(o.out_dir, curves, run.one_set, run.direct.calibration.values(), settings.fit.simulation);
   write_report(out, o.out_dir, report);
   if (o.plots) draw(o.out_dir, curves, err);
   if (!o.quiet) err << "calibrate: params.toml, report.md, fit_*.csv and charts in " << o.out_dir << "/\n";

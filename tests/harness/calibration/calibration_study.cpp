@@ -4,18 +4,17 @@
 // digitised figure, with stated noise (calibration/synthetic.hpp).
 //
 //   calibration_study example DIR   writes calibration_data/synthetic_example/'s curves
-//   calibration_study recovery      the recovery table (true, fitted, standard error)
-//   calibration_study per-sigma-n   van der Pluijm's per-sigma_n m and n: one set against per-level misfit
+//   calibration_study recovery      the recovery table (true, fitted, standard error, stage;
+//                                   misfit of one set and of m, n per sigma_n)
+//   calibration_study direct        the direct rules' errors over 20 seeds, 1 % and 3 % noise
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <random>
 #include <string>
 
-#include "calibration/direct_rules.hpp"
-#include "calibration/fit.hpp"
+#include "calibration/pipeline.hpp"
 #include "calibration/synthetic.hpp"
-#include "calibration/uncertainty.hpp"
 #include "paper_sets.hpp"
 #include "random_parameters.hpp"
 
@@ -24,6 +23,8 @@ using namespace mortar::harness;
 
 namespace {
 
+// The standard programme's curves, each made with its own set (per_test[k]
+// for the k-th test: tension, then sigma_n = -0.1, -0.5, -1.0 MPa).
 std::vector<TestCurve> curves_of(const std::vector<Parameters>& per_test, double noise, int points, std::uint32_t seed) {
   std::vector<TestCurve> out;
   const std::vector<SyntheticTest> plan = standard_programme(per_test[0], points);
@@ -33,44 +34,78 @@ std::vector<TestCurve> curves_of(const std::vector<Parameters>& per_test, double
   return out;
 }
 
-void recovery(const char* title, const Parameters& truth, double noise, std::uint32_t seed) try {
-  const std::vector<TestCurve> curves = curves_of({truth, truth, truth, truth}, noise, 30, seed);
-  const DirectResult d = apply_direct_rules(curves);
-  const FitResult fit = fit_softening(curves, d.calibration, FitOptions{});
-  const Uncertainty u = uncertainty_from(fit.jacobian, fit.residuals);
-  Calibration cal = d.calibration;
-  apply_fit(cal, fit, u);
-  fill_placeholders(true, cal);
-  std::printf("\n### %s, noise %.0f %% (seed %u): RMS misfit %.4f, %ld simulations\n\n", title, 100 * noise, seed,
-              fit.rms, fit.evaluations);
-  std::printf("| parameter | true | fitted | error %% | standard error | stage |\n|---|---|---|---|---|---|\n");
+std::string percent(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%+.1f %%", 100 * x);
+  return buf;
+}
+
+// One row per parameter: true, fitted, error, standard error, stage; m and n
+// per level below when the truth had them per level.
+void recovery(const char* title, const std::vector<Parameters>& truth, double noise, std::uint32_t seed) try {
+  CalibrationSettings s;
+  s.per_sigma_n = true;
+  const CalibrationRun r = calibrate_curves(curves_of(truth, noise, 30, seed), s);
+  std::printf("\n### %s, noise %.0f %% (seed %u)\n\nRMS misfit: one set %.4f, m and n per sigma_n %.4f "
+              "(%ld + %ld simulations of the data set)\n\n",
+              title, 100 * noise, seed, r.one_set.rms, r.per_level.rms, r.one_set.evaluations, r.per_level.evaluations);
+  std::printf("| parameter | true | fitted | error | standard error | stage |\n|---|---|---|---|---|---|\n");
   for (int i = 0; i < kParameterCount; ++i) {
-    const CalibratedParameter& e = cal.entries[size_t(i)];
-    const double t = parameter_at(truth, i);
+    const CalibratedParameter& e = r.final.entries[size_t(i)];
+    const double t = parameter_at(truth[2], i);
     std::printf("| %s | %.5g | %.5g | %s | %s | %s |\n", kParameterInfo[size_t(i)].name, t, e.value,
-                t != 0 ? std::to_string(std::lround(1000 * (e.value - t) / t) / 10.0).substr(0, 5).c_str() : "–",
-                e.stage == Stage::not_determined ? "not determined" : std::to_string(e.std_error).c_str(),
+                t != 0 ? percent((e.value - t) / t).c_str() : "–",
+                e.stage == Stage::not_determined ? "–" : (std::to_string(e.std_error).substr(0, 8) + " (" +
+                                                          percent(e.std_error / e.value).substr(1) + ")").c_str(),
                 stage_name(e.stage));
   }
+  std::printf("\nm and n per sigma_n:\n\n| unknown | true | fitted | error | standard error |\n|---|---|---|---|---|\n");
+  for (size_t k = 0; k < r.per_level.unknowns.size(); ++k) {
+    const FitUnknown& u = r.per_level.unknowns[k];
+    const size_t level = u.sigma_n == -0.1 ? 1 : u.sigma_n == -1.0 ? 3 : 2;
+    const double t = parameter_at(truth[level], u.index), v = r.per_level.value[long(k)];
+    std::printf("| %s | %.5g | %.5g | %s | %.3g |\n", u.label().c_str(), t, v, percent((v - t) / t).c_str(),
+                r.per_level_uncertainty.std_error[long(k)]);
+  }
+  for (const std::string& n : r.final.notes) std::printf("- %s\n", n.c_str());
 } catch (const std::exception& e) {
   std::printf("\n### %s, noise %.0f %% (seed %u): calibration failed: %s\n", title, 100 * noise, seed, e.what());
 }
 
-void per_sigma_n() {
-  const std::vector<Parameters> sets = {testing::van_der_pluijm(-0.5), testing::van_der_pluijm(-0.1),
-                                        testing::van_der_pluijm(-0.5), testing::van_der_pluijm(-1.0)};
-  const std::vector<TestCurve> curves = curves_of(sets, 0.01, 30, 7);
-  const DirectResult d = apply_direct_rules(curves);
-  const FitResult one = fit_softening(curves, d.calibration, FitOptions{});
-  Calibration cal = d.calibration;
-  apply_fit(cal, one, uncertainty_from(one.jacobian, one.residuals));
-  FitOptions per;
-  per.per_sigma_n = true;
-  const FitResult levels = fit_softening(curves, cal, per);
-  std::printf("van der Pluijm with Table 1's m, n per sigma_n, 1 %% noise: RMS misfit one set %.4f, per sigma_n %.4f\n",
-              one.rms, levels.rms);
-  for (size_t k = 0; k < levels.unknowns.size(); ++k)
-    std::printf("  %s = %.5g\n", levels.unknowns[k].label().c_str(), levels.value[long(k)]);
+std::vector<Parameters> same(const Parameters& p) { return {p, p, p, p}; }
+
+// The direct rules alone over 20 seeds: largest and RMS relative error of
+// kn, ks, ft0 and GIC, and the largest |error|/standard error.
+void direct_study() {
+  std::mt19937 rng(5);
+  std::vector<std::pair<std::string, Parameters>> sets = {
+      {"van der Pluijm", testing::van_der_pluijm(-0.5)}, {"Atkinson", testing::atkinson()}, {"Almeida M15", testing::almeida_m15()}};
+  for (int i = 0; i < 4; ++i) sets.push_back({"random " + std::to_string(i), mj_test::random_parameters(rng)});
+  const char* names[] = {"kn", "ks", "ft0", "GIC"};
+  std::printf("| set | ft0^2/(GIC kn) | noise | kn | ks | ft0 | GIC |\n|---|---|---|---|---|---|---|\n");
+  for (auto& [name, p] : sets)
+    for (double noise : {0.01, 0.03}) {
+      double worst[4] = {}, sum2[4] = {}, z[4] = {};
+      int n = 0;
+      std::string failure;
+      for (std::uint32_t seed = 1; seed <= 20; ++seed) try {
+          const DirectResult d = apply_direct_rules(curves_of(same(p), noise, 30, 1000 * seed));
+          for (int k = 0; k < 4; ++k) {
+            const double t = parameter_at(p, parameter_index(names[k])), v = d.calibration[names[k]].value;
+            worst[k] = std::max(worst[k], std::abs(v - t) / t), sum2[k] += std::pow((v - t) / t, 2);
+            z[k] = std::max(z[k], std::abs(v - t) / d.calibration[names[k]].std_error);
+          }
+          ++n;
+        } catch (const std::exception& e) {
+          failure = e.what();
+        }
+      std::printf("| %s | %.3g | %.0f %% |", name.c_str(), p.ft0 * p.ft0 / (p.GIC * p.kn), 100 * noise);
+      for (int k = 0; k < 4; ++k)
+        std::printf(" %.2f / %.2f %% (%.1f) |", 100 * worst[k], 100 * std::sqrt(sum2[k] / n), z[k]);
+      std::printf(n < 20 ? " %d failed: %s\n" : "\n", 20 - n, failure.c_str());
+    }
+  std::printf("\nper cell: largest / RMS relative error over 20 seeds (largest |error| / standard error); "
+              "a GIC the data cannot determine has no standard error (nan)\n");
 }
 
 }  // namespace
@@ -79,7 +114,7 @@ int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IONBF, 0);
   if (argc == 3 && !std::strcmp(argv[1], "example")) {
     const Parameters p = testing::van_der_pluijm(-0.5);
-    for (const TestCurve& c : curves_of({p, p, p, p}, 0.02, 30, 2024))
+    for (const TestCurve& c : curves_of(same(p), 0.02, 30, 2024))
       write_test_curve(std::string(argv[2]) + "/" + c.name + ".csv", c,
                        {"SYNTHETIC, not experimental: made by calibration_study example from the law with",
                         "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa), resampled at 30 points",
@@ -88,21 +123,24 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc == 2 && !std::strcmp(argv[1], "recovery")) {
-    recovery("van der Pluijm (m, n of -0.5 MPa)", testing::van_der_pluijm(-0.5), 0.01, 11);
-    recovery("Almeida M15", testing::almeida_m15(), 0.01, 12);
+    using testing::van_der_pluijm;
+    recovery("van der Pluijm, m and n of Table 1 per sigma_n",
+             {van_der_pluijm(-0.5), van_der_pluijm(-0.1), van_der_pluijm(-0.5), van_der_pluijm(-1.0)}, 0.01, 7);
+    recovery("van der Pluijm (m, n of -0.5 MPa)", same(van_der_pluijm(-0.5)), 0.01, 11);
+    recovery("Almeida M15", same(testing::almeida_m15()), 0.01, 12);
+    recovery("Atkinson", same(testing::atkinson()), 0.01, 15);
     std::mt19937 rng(5);
-    const Parameters random = mj_test::random_parameters(rng);
-    std::printf("\nrandom set (seed 5): ");
-    for (int i = 0; i < kParameterCount; ++i) std::printf("%s %.5g ", kParameterInfo[size_t(i)].name, parameter_at(random, i));
-    recovery("random valid set (seed 5)", random, 0.01, 13);
-    recovery("Atkinson", testing::atkinson(), 0.01, 15);
-    recovery("van der Pluijm (m, n of -0.5 MPa)", testing::van_der_pluijm(-0.5), 0.03, 14);
+    const Parameters snap = mj_test::random_parameters(rng);
+    recovery("random valid set (seed 5, draw 1: its tension softening snaps back)", same(snap), 0.01, 13);
+    mj_test::random_parameters(rng), mj_test::random_parameters(rng);
+    recovery("random valid set (seed 5, draw 4)", same(mj_test::random_parameters(rng)), 0.01, 16);
+    recovery("van der Pluijm (m, n of -0.5 MPa)", same(van_der_pluijm(-0.5)), 0.03, 14);
     return 0;
   }
-  if (argc == 2 && !std::strcmp(argv[1], "per-sigma-n")) {
-    per_sigma_n();
+  if (argc == 2 && !std::strcmp(argv[1], "direct")) {
+    direct_study();
     return 0;
   }
-  std::fprintf(stderr, "usage: calibration_study example DIR | recovery | per-sigma-n\n");
+  std::fprintf(stderr, "usage: calibration_study example DIR | recovery | direct\n");
   return 2;
 }

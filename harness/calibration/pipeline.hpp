@@ -1,0 +1,35 @@
+// The whole calibration of a set of test curves, as `calibrate` runs it and
+// the tests and the recovery study check it: the direct rules, the one-set
+// fit with its uncertainty, the final parameter set, and on request the fit
+// of m and n per normal stress.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "calibration/direct_rules.hpp"
+#include "calibration/fit.hpp"
+#include "calibration/uncertainty.hpp"
+
+namespace mortar::harness {
+
+struct CalibrationRun {
+  DirectResult direct;
+  FitResult one_set;
+  Uncertainty one_set_uncertainty;
+  Calibration final;  // the one set, with errors and stages
+  bool per_level_fitted = false;
+  FitResult per_level;  // m and n per sigma_n (when per_level_fitted)
+  Parameters per_level_base;  // its start: the values of what it did not fit
+  Uncertainty per_level_uncertainty;
+};
+
+struct CalibrationSettings {
+  FitOptions fit;            // of the one set (its per_sigma_n is ignored)
+  bool per_sigma_n = false;  // also fit m and n per normal stress
+  std::function<void(const FitProgress&)> per_level_progress;
+};
+
+CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const CalibrationSettings& s);
+
+}  // namespace mortar::harness
