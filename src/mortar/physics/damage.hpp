@@ -72,7 +72,6 @@ void disintegrate_if_no_strength(const Model& M, State& y);
 // dn = 1, the elastic energy of the normal released as damage dissipation.
 void complete_normal_damage(const Model& M, State& y);
 
-
 // Which components of an open joint are on their damage-growing branch in a
 // substep (docs/model.md 6, Decision - open-regime branches); a component on
 // its frozen secant keeps its damage exactly.
