@@ -21,10 +21,12 @@
 //   calls    1 + (byte % 8) calls. Per call: up to 3 state corruptions (point,
 //            slot, value: garbage a corrupted restart could hold), then per
 //            point the penetration (small kinds add to the previous one) and
-//            nDir drDisp components. The target stops an input early once its
-//            points have spent 200 000 substeps (SDV 19 + 20) in all: tight
-//            tolerances legitimately cost up to the budget of 10^5 substeps
-//            per point and increment, and repeating that teaches nothing.
+//            nDir drDisp components. The target skips an input's remaining
+//            calls once its points have spent 10 000 substeps (SDV 19 + 20)
+//            in all: tight tolerances legitimately cost up to the budget of
+//            10^5 substeps per point and increment (and the fallback chain
+//            four times that), and repeating that teaches nothing; one such
+//            call took 0.1-1 s under the sanitizers (docs/robustness.md).
 //
 // A value is a kind byte and its payload (see Value): 0, small, tiny (down to
 // denormals), huge (up to 1e308), NaN, +-infinity, raw IEEE bits, -1e36 (the
