@@ -34,38 +34,13 @@ Inputs inputs(int i, int n) {
   return {p, {Real(0), Real(0.03 * (t - before)), Real(-0.01 * (t - before))}};
 }
 
-// What the routine computes over the plain layout in its precision: the law
-// between load_state and store_state, the separation increment and the
-// stress as the adapter forms them (adapter/explicit_block.hpp).
-struct PlainLayout {
-  Real state[mortar::kStateCount] = {};
-  Real stress[3] = {};
-
-  void call(const mortar::Model& M, const Inputs& in) {
-    mortar::State s;
-    mortar::load_state(state, s);
-    const bool first = state[slot::initialised] == Real(0);
-    const double reference = double(state[slot::reference_penetration]);
-    const mortar::Vec3 d = first ? mortar::Vec3::Zero()
-                                 : mortar::Vec3((reference - double(in.penetration)) - s.separation[0],
-                                                double(in.dr_disp[1]), double(in.dr_disp[2]));
-    const mortar::IncrementResult r = mortar::integrate_increment(M, s, d);
-    mortar::store_state(s, state);
-    if (first) {
-      state[slot::reference_penetration] = in.penetration;
-      state[slot::initialised] = Real(1);
-    }
-    stress[0] = Real(-r.traction[0]);
-    stress[1] = Real(-1.0 * r.traction[1]);
-    stress[2] = Real(-1.0 * r.traction[2]);
-  }
-};
-
 // The full path of the adapter (adapter/explicit_block.hpp, integrate_point):
 // the whole state loaded from this precision's layout for the declared state
 // count (adapter/state_storage.hpp), its tangential vectors turned by dRot,
-// the law, the whole state stored. The routine takes its elastic path (elastic_point, which writes only
-// what an elastic increment changes) wherever the elastic shortcut holds.
+// the law, the whole state stored (with DEPVAR = 23: the law between
+// mortar::load_state and store_state). The routine takes its elastic path
+// (elastic_point, which writes only what an elastic increment changes)
+// wherever the elastic shortcut holds.
 struct FullPath {
   mj_adapter::StateStorage<Real> storage;
   std::vector<Real> state;
@@ -116,14 +91,15 @@ TEST_CASE("State array: with DEPVAR = 23 the routine is the law over the plain l
           "[abi][state]") {
   const mortar::Model model = model_of(m15_props());
   OnePoint pt(m15_props(), mortar::kStateCount);
-  PlainLayout plain;
+  FullPath plain(mortar::kStateCount);  // DEPVAR = 23: mortar::load_state and store_state
+  const Real unit[4] = {1, 0, 0, 1};
   const int n = 400;
   int differences = 0;
   for (int i = 0; i <= n; ++i) {
     apply(pt, inputs(i, n));
     pt.call();
-    plain.call(model, inputs(i, n));
-    differences += !std::equal(plain.state, plain.state + mortar::kStateCount, pt.state.begin());
+    plain.call(model, inputs(i, n), unit);
+    differences += !std::equal(plain.state.begin(), plain.state.end(), pt.state.begin());
     differences += !std::equal(plain.stress, plain.stress + 3, pt.stress);
   }
   CHECK(differences == 0);
