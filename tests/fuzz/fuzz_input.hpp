@@ -16,7 +16,13 @@
 //            paper set scaled per parameter by 10^(i8/16); for modes 0, 1, 3
 //            one byte per entry from props(15) on (controls, shear sign,
 //            extra entries: a table of interesting values, or a raw double);
-//            then up to 3 overrides (index byte, raw double).
+//            then up to 3 overrides (index byte, raw double). The target
+//            lowers the substep budget props(18) to 10^4 where it is 0 (the
+//            default, 10^5) or a larger valid count (up to 10^9): with a
+//            tolerance no substep meets (STOL 1e-309) one increment spends
+//            the whole budget, hours at 10^9; below the budget the same code
+//            runs, and the rule [1, 1e9] itself is a unit test
+//            (test_parameters.cpp).
 //   start    one flag byte: incoming stress and sed all 0, or one value each.
 //   calls    1 + (byte % 8) calls. Per call: up to 3 state corruptions (point,
 //            slot, value: garbage a corrupted restart could hold), then per

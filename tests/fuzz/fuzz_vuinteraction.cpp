@@ -54,6 +54,8 @@ constexpr const char* kName = "FUZZ-JOINT";
 // Substeps (SDV 19 + 20) an input's points may spend before its remaining
 // calls are skipped (fuzz_input.hpp, "calls").
 constexpr double kInputSubstepBudget = 1e4;
+// The largest substep budget per increment (props(18)) an input gets.
+constexpr double kFuzzMaxSubsteps = 1e4;
 
 size_t count(long n) { return n > 0 ? size_t(n) : 0; }
 bool finite(double x) { return std::isfinite(x); }
@@ -263,6 +265,14 @@ void decode_props(Reader& r, Block& b) {
     const uint8_t index = r.u8();
     const double value = r.f64();
     if (!p.empty()) p[index % p.size()] = value;
+  }
+  // The substep budget, props(18), lowered to kFuzzMaxSubsteps where the
+  // input leaves it at the default (0: 10^5) or sets a larger valid one
+  // (fuzz_input.hpp, "props").
+  if (p.size() > 17) {
+    double& budget = p[17];
+    if (budget == 0 || (budget == std::floor(budget) && budget > kFuzzMaxSubsteps && budget <= 1e9))
+      budget = kFuzzMaxSubsteps;
   }
   for (size_t i = 0; i < p.size(); ++i) b.props[i] = Real(p[i]);
 }
