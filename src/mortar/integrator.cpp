@@ -273,18 +273,27 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
   return first;
 }
 
-}  // namespace
-
-IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
+// integrate_increment, with or without the elastic shortcut.
+IncrementResult integrate(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut) {
   if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
   if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
   // The elastic shortcut first: most increments end here, without the copy
   // of the start state the fallback chain needs.
-  if (IncrementResult res; !tangent && elastic_increment(M, state, d, res)) return res;
+  if (IncrementResult res; shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
   const State start = state;
   const IncrementResult first = attempt(M, state, d, tangent, false);
   if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
   return fall_back(M, start, state, d, tangent, first);
+}
+
+}  // namespace
+
+IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
+  return integrate(M, state, d, tangent, true);
+}
+
+IncrementResult integrate_declined_increment(const Model& M, State& state, const Vec3& d) {
+  return integrate(M, state, d, nullptr, false);
 }
 
 }  // namespace mortar

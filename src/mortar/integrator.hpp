@@ -73,6 +73,11 @@ IncrementResult integrate_increment(const Model& model, State& state, const Vec3
 // Fixed-size, allocates nothing.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation, Mat3* tangent);
 
+// integrate_increment without a tangent for an increment elastic_increment
+// has declined from the same state: the same result, without trying the
+// shortcut a second time (the adapters' full path, after their elastic path).
+IncrementResult integrate_declined_increment(const Model& model, State& state, const Vec3& d_separation);
+
 // The continuum (rate) tangent of Eq. 20 at a state and its traction, on the
 // damage-growing branch: kS - (kF o m)(dF o kS)^T / denominator when the
 // point is on the surface and the denominator is positive, else K(d, h).

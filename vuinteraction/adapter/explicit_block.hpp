@@ -297,7 +297,9 @@ struct ExplicitBlock {
     if (counts.n_dir == 3) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::Vec3 d = separation_increment(k, st, s);
-    const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, d);
+    // elastic_point has tried the shortcut on this state and increment (or
+    // declined a state the law rejects before it).
+    const mortar::IncrementResult r = mortar::integrate_declined_increment(setup.model, s, d);
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
     // The law's result in this routine's precision: a double beyond a float's
     // range would come back as infinity. Checked before anything is stored.
