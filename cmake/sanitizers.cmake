@@ -63,5 +63,11 @@ if(MJ_FUZZ)
   # law as doubles, whose comparisons were never traced, and its integer
   # fields are single bytes the mutator reaches without a hint.
   add_compile_options("$<$<COMPILE_LANGUAGE:CXX>:-fsanitize=fuzzer-no-link;-fno-sanitize-coverage=trace-cmp>")
+  # Eigen's one-line evaluators (coeff, packet, assignCoeff: every operation
+  # on a 3-vector) inlined: under the instrumentation Clang at -O2 keeps them
+  # as calls, each with its sanitizer prologue, and they took most of the run
+  # (perf; docs/robustness.md). Inlined code is instrumented alike: the same
+  # checks, assertions included, fewer calls.
+  add_compile_definitions("EIGEN_STRONG_INLINE=inline __attribute__((always_inline))")
   set(MJ_FUZZ_TARGET_FLAGS -fsanitize=fuzzer -fno-sanitize-coverage=trace-cmp)
 endif()

@@ -12,15 +12,9 @@
 namespace mortar {
 
 const char* check_state(const State& s) {
-  const double v[] = {s.plastic[0], s.plastic[1], s.plastic[2], s.crack[0], s.crack[1],
-                      s.crack[2], s.wI, s.wII, s.wIII, s.dn, s.ds, s.separation[0],
-                      s.separation[1], s.separation[2], s.dissipation_plastic,
-                      s.dissipation_damage, s.energy_unilateral};
-  // One test for all on the path every increment takes: x * 0 is 0 for a
-  // finite x and NaN otherwise, and a NaN stays in the sum.
-  double zero = 0;
-  for (double x : v) zero += x * 0;
-  if (zero != 0) return "every state variable must be finite";
+  if (state_valid(s)) return nullptr;
+  const std::array<double, 17> v = finite_state_values(s);
+  if (!all_finite(v.data(), int(v.size()))) return "every state variable must be finite";
   if (!(s.dn >= 0 && s.dn <= 1)) return "damage d_n (SDV 10) must lie in [0, 1]";
   if (!(s.ds >= 0 && s.ds <= 1)) return "damage d_s (SDV 11) must lie in [0, 1]";
   if (!(s.wI >= 0)) return "work w_I (SDV 7) must be >= 0";
@@ -127,34 +121,14 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   return res;
 }
 
-// An increment certainly_elastic() proves elastic, booked as integrate_with()
-// books one elastic segment over all of d, whatever the scheme: the same sum
-// and the same functions of the end state, no dissipation (x - x = +0, the
-// result's defaults), no substeps. False (state untouched) when it cannot
-// prove it or the end lies beyond double's range (the full path reports that).
-bool elastic_increment(const Model& M, State& state, const Vec3& d, IncrementResult& res) {
-  if (!certainly_elastic(M, state, d)) return false;
-  const Vec3 separation0 = state.separation;
-  state.separation += d;
-  res.traction = traction_of(M, state);
-  res.elastic_energy = elastic_energy(M, state);
-  const double finite = state.separation.sum() + res.traction.sum() + res.elastic_energy;
-  if (!(finite - finite == 0)) {
-    state.separation = separation0;
-    res = IncrementResult{};
-    return false;
-  }
-  state.substeps_accepted = state.substeps_rejected = state.status = 0;
-  return true;
-}
-
 // One attempt at the increment with the scheme of M.controls, from a valid
 // state and a finite increment.
-IncrementResult attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
+// With `shortcut`, an increment elastic_increment() proves elastic is booked
+// without the machinery (the explicit routines ask for no tangent; most of
+// their increments, and the fallback chain's pieces, are elastic).
+IncrementResult attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut = true) {
   IncrementResult res;
-  // The explicit routines ask for no tangent; most of their increments, and
-  // the fallback chain's pieces, are elastic.
-  if (!tangent && elastic_increment(M, state, d, res)) return res;
+  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
   TangentTracker tracker;
   // The scheme is chosen once per increment; each lives on the stack.
   switch (M.controls.scheme) {
@@ -299,15 +273,27 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
   return first;
 }
 
+// integrate_increment, with or without the elastic shortcut.
+IncrementResult integrate(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut) {
+  if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
+  if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
+  // The elastic shortcut first: most increments end here, without the copy
+  // of the start state the fallback chain needs.
+  if (IncrementResult res; shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
+  const State start = state;
+  const IncrementResult first = attempt(M, state, d, tangent, false);
+  if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
+  return fall_back(M, start, state, d, tangent, first);
+}
+
 }  // namespace
 
 IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d, Mat3* tangent) {
-  if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
-  if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
-  const State start = state;
-  const IncrementResult first = attempt(M, state, d, tangent);
-  if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
-  return fall_back(M, start, state, d, tangent, first);
+  return integrate(M, state, d, tangent, true);
+}
+
+IncrementResult integrate_declined_increment(const Model& M, State& state, const Vec3& d) {
+  return integrate(M, state, d, nullptr, false);
 }
 
 }  // namespace mortar

@@ -171,6 +171,8 @@ Model make_model(const Parameters& p, const Controls& c) {
   m.alpha0 = 0.5 * (m.cohesion_term / m.tan_phi0 - p.ft0 * m.tan_phi0);
   m.beta0 = 0.5 * (m.cohesion_term / m.tan_phi0 + p.ft0 * m.tan_phi0);
   m.stress_scale = p.ft0;
+  m.separation_floor = p.ft0 / p.kn;
+  m.cohesion_over_tan_phi0 = m.cohesion_term / m.tan_phi0;
   return m;
 }
 

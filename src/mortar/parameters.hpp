@@ -95,6 +95,12 @@ struct Model {
   double cohesion_term = 0;  // c0^2 / ft0, so that alpha, beta = s*(C/tanphi -/+ ft0*tanphi)/2
   double alpha0 = 0, beta0 = 0;  // Eq. 3 at s = 1, tanphi = tanphi0
   double stress_scale = 0;       // ft0: reference for tolerances and floors [MPa]
+  // Once per model rather than per point-update (the same expressions, so the
+  // same values): the floor of boundary_eps, the elastic separation at ft0
+  // [mm]; cohesion_term / tan_phi0, the elastic shortcut's C / tan(phi) on an
+  // unworn joint (w_III = 0) [MPa].
+  double separation_floor = 0;
+  double cohesion_over_tan_phi0 = 0;
 };
 
 // Builds a Model from validated inputs (call validate first). Non-throwing.

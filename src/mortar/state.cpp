@@ -14,9 +14,8 @@ const char* const kLowStateNames[kPairedStateCount - kStateCount] = {
 
 namespace {
 
-// The member behind a paired slot (State or const State).
-template <class S>
-auto paired_value(S& s, int high) -> decltype((s.wI)) {
+// The member behind a paired slot.
+double paired_value(const State& s, int high) {
   switch (high) {
     case slot::plastic_n: return s.plastic[0];
     case slot::plastic_s1: return s.plastic[1];
@@ -33,11 +32,6 @@ auto paired_value(S& s, int high) -> decltype((s.wI)) {
 }
 
 }  // namespace
-
-void load_state_pairs(const float* a, State& s) {
-  load_state(a, s);
-  for (const SlotPair& p : kPairedSlots) paired_value(s, p.high) = pair_value(a[p.high], a[p.low]);
-}
 
 void store_state_pairs(const State& s, float* a) {
   store_state(s, a);

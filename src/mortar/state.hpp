@@ -104,7 +104,7 @@ int int_slot(Real x) {
 
 // Named mapping between State and the flat array of one point (any precision).
 template <class Real>
-void load_state(const Real* a, State& s) {
+inline void load_state(const Real* a, State& s) {
   auto v3 = [&](int i) { return Vec3(double(a[i]), double(a[i + 1]), double(a[i + 2])); };
   s.plastic = v3(slot::plastic_n);
   s.crack = v3(slot::crack_n);
@@ -124,7 +124,7 @@ void load_state(const Real* a, State& s) {
 }
 
 template <class Real>
-void store_state(const State& s, Real* a) {
+inline void store_state(const State& s, Real* a) {
   auto put3 = [&](int i, const Vec3& v) {
     for (int k = 0; k < 3; ++k) a[i + k] = Real(v[k]);
   };
@@ -157,22 +157,83 @@ inline double pair_value(float high, float low) { return double(high) + double(l
 // wrote (a corrupted restart, slots some other code filled). Inline: it runs
 // for 11 slots on every point-update of the single-precision routine.
 inline bool pair_consistent(float high, float low) {
-  if (!std::isfinite(high) || !std::isfinite(low)) return false;
-  const float h = std::fabs(high);
-  // nextafter(h, +inf) without the library call: the next float up has the
-  // next bit pattern, for every finite h >= 0 (FLT_MAX's successor is +inf,
-  // 0's the least denormal).
-  std::uint32_t bits;
-  std::memcpy(&bits, &h, sizeof bits);
-  ++bits;
-  float next;
-  std::memcpy(&next, &bits, sizeof next);
-  return std::fabs(low) <= next - h;
+  // On the bit patterns of the magnitudes, so that a loop over the pairs
+  // vectorises: finite below the pattern of infinity, and the next float up
+  // from |high| has the next pattern, for every finite |high| (FLT_MAX's
+  // successor is +inf, 0's the least denormal).
+  std::uint32_t h_bits, l_bits;
+  std::memcpy(&h_bits, &high, sizeof h_bits);
+  std::memcpy(&l_bits, &low, sizeof l_bits);
+  h_bits &= 0x7fffffffu;
+  l_bits &= 0x7fffffffu;
+  const std::uint32_t next_bits = h_bits + 1;
+  float h, l, next;
+  std::memcpy(&h, &h_bits, sizeof h);
+  std::memcpy(&l, &l_bits, sizeof l);
+  std::memcpy(&next, &next_bits, sizeof next);
+  constexpr std::uint32_t kInfinity = 0x7f800000u;
+  return (h_bits < kInfinity) & (l_bits < kInfinity) & (l <= next - h);
+}
+
+// kPairedSlots as runs of consecutive high and low slots, for loops over the
+// pairs that vectorise.
+struct PairRun {
+  int high, low, count;
+};
+inline constexpr PairRun kPairRuns[] = {{slot::plastic_n, low_slot::plastic_n, 3}, {slot::work_I, low_slot::work_I, 8}};
+constexpr bool runs_are_pairs() {
+  int n = 0;
+  for (const PairRun& r : kPairRuns)
+    for (int i = 0; i < r.count; ++i, ++n)
+      if (kPairedSlots[n].high != r.high + i || kPairedSlots[n].low != r.low + i) return false;
+  return n == kPairedStateCount - kStateCount;
+}
+static_assert(runs_are_pairs(), "kPairRuns lists kPairedSlots");
+
+// Calls f(high slot, low slot, member) for each paired variable of s (State
+// or const State), in the order of kPairedSlots.
+template <class S, class F>
+inline void for_each_pair(S& s, F f) {
+  for (int i = 0; i < 3; ++i) f(slot::plastic_n + i, low_slot::plastic_n + i, s.plastic[i]);
+  f(slot::work_I, low_slot::work_I, s.wI);
+  f(slot::work_II, low_slot::work_II, s.wII);
+  f(slot::work_III, low_slot::work_III, s.wIII);
+  f(slot::damage_n, low_slot::damage_n, s.dn);
+  f(slot::damage_s, low_slot::damage_s, s.ds);
+  for (int i = 0; i < 3; ++i) f(slot::separation_n + i, low_slot::separation_n + i, s.separation[i]);
+}
+
+// Calls f(i, high slot, low slot) for the pairs i = 0 .. 10 in the order of
+// kPairedSlots, one loop per run, so that the compiler can vectorise f.
+template <class F>
+inline void for_each_pair_slot(F f) {
+  static_assert(sizeof kPairRuns / sizeof kPairRuns[0] == 2, "one loop per run");
+  constexpr PairRun a = kPairRuns[0], b = kPairRuns[1];
+  for (int i = 0; i < a.count; ++i) f(i, a.high + i, a.low + i);
+  for (int i = 0; i < b.count; ++i) f(a.count + i, b.high + i, b.low + i);
+}
+
+inline constexpr int kPairCount = kPairedStateCount - kStateCount;
+
+// The paired variables' values, in the order of kPairedSlots, from the array.
+inline void pair_values(const float* a, double (&v)[kPairCount]) {
+  for_each_pair_slot([&](int i, int high, int low) { v[i] = pair_value(a[high], a[low]); });
 }
 
 // load_state / store_state with the paired variables as float pairs: the
-// array holds at least kPairedStateCount values.
-void load_state_pairs(const float* a, State& s);
+// array holds at least kPairedStateCount values. The load is inline (the
+// single-precision routines run it on every point-update). The store stays
+// out of line, as scalar code: GCC 12.2 at -O2 and -O3 miscompiles
+// float(x - double(float(x))) when it vectorises two such lanes within a block
+// (the extension of the truncation becomes x, the low part 0; observed on
+// x86-64, reproduced in ten lines), which is what pair_low computes.
+inline void load_state_pairs(const float* a, State& s) {
+  load_state(a, s);
+  double v[kPairCount];
+  pair_values(a, v);
+  int i = 0;
+  for_each_pair(s, [&](int, int, double& x) { x = v[i++]; });
+}
 void store_state_pairs(const State& s, float* a);
 
 // Short names of the state variables in slot order (for CSV headers, docs).

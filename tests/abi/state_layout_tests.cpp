@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include "adapter/rotation.hpp"
+#include "adapter/state_storage.hpp"
 #include "one_point.hpp"
 #include "paper_sets.hpp"
 
@@ -32,23 +34,30 @@ Inputs inputs(int i, int n) {
   return {p, {Real(0), Real(0.03 * (t - before)), Real(-0.01 * (t - before))}};
 }
 
-// What the routine computes over the plain layout in its precision: the law
-// between load_state and store_state, the separation increment and the
-// stress as the adapter forms them (adapter/explicit_block.hpp).
-struct PlainLayout {
-  Real state[mortar::kStateCount] = {};
+// The full path of the adapter (adapter/explicit_block.hpp, integrate_point):
+// the whole state loaded from this precision's layout for the declared state
+// count (adapter/state_storage.hpp), its tangential vectors turned by dRot,
+// the law, the whole state stored (with DEPVAR = 23: the law between
+// mortar::load_state and store_state). The routine takes its elastic path
+// (elastic_point, which writes only what an elastic increment changes)
+// wherever the elastic shortcut holds.
+struct FullPath {
+  mj_adapter::StateStorage<Real> storage;
+  std::vector<Real> state;
   Real stress[3] = {};
+  explicit FullPath(int states) : storage(mj_adapter::StateStorage<Real>::of(states)), state(states, Real(0)) {}
 
-  void call(const mortar::Model& M, const Inputs& in) {
+  void call(const mortar::Model& M, const Inputs& in, const Real* d_rot) {
     mortar::State s;
-    mortar::load_state(state, s);
+    storage.load(state.data(), s);
+    mj_adapter::rotate_tangential_state(d_rot, s);
     const bool first = state[slot::initialised] == Real(0);
     const double reference = double(state[slot::reference_penetration]);
     const mortar::Vec3 d = first ? mortar::Vec3::Zero()
                                  : mortar::Vec3((reference - double(in.penetration)) - s.separation[0],
                                                 double(in.dr_disp[1]), double(in.dr_disp[2]));
     const mortar::IncrementResult r = mortar::integrate_increment(M, s, d);
-    mortar::store_state(s, state);
+    storage.store(s, state.data());
     if (first) {
       state[slot::reference_penetration] = in.penetration;
       state[slot::initialised] = Real(1);
@@ -82,14 +91,15 @@ TEST_CASE("State array: with DEPVAR = 23 the routine is the law over the plain l
           "[abi][state]") {
   const mortar::Model model = model_of(m15_props());
   OnePoint pt(m15_props(), mortar::kStateCount);
-  PlainLayout plain;
+  FullPath plain(mortar::kStateCount);  // DEPVAR = 23: mortar::load_state and store_state
+  const Real unit[4] = {1, 0, 0, 1};
   const int n = 400;
   int differences = 0;
   for (int i = 0; i <= n; ++i) {
     apply(pt, inputs(i, n));
     pt.call();
-    plain.call(model, inputs(i, n));
-    differences += !std::equal(plain.state, plain.state + mortar::kStateCount, pt.state.begin());
+    plain.call(model, inputs(i, n), unit);
+    differences += !std::equal(plain.state.begin(), plain.state.end(), pt.state.begin());
     differences += !std::equal(plain.stress, plain.stress + 3, pt.stress);
   }
   CHECK(differences == 0);
@@ -137,4 +147,43 @@ TEST_CASE("State array: single precision with DEPVAR >= 34 keeps SDV 1-23 as the
   }
   CHECK(inconsistent == 0);
   CHECK(nonzero_low > 0);
+}
+
+TEST_CASE("State array: elastic increments under turning tangents write what the full path writes, bit for bit",
+          "[abi][state]") {
+  // After plastic slip and opening (nonzero plastic and crack separation), the
+  // path unloads and reloads elastically while dRot turns the tangents a
+  // little at every call: the routine's elastic path must store exactly what
+  // loading, turning, integrating and storing the whole state gives, in both
+  // layouts of this precision.
+  const mortar::Model model = model_of(m15_props());
+  for (const int states : {mortar::kStateCount, mortar::kPairedStateCount}) {
+    OnePoint pt(m15_props(), states);
+    FullPath full(states);
+    const int n = 400;
+    int differences = 0, elastic = 0;
+    for (int i = 0; i <= 2 * n; ++i) {
+      Inputs in = inputs(std::min(i, n), n);
+      if (i > n) {  // unloaded by 2e-6 mm, then back and forth between 2e-6 and 1e-6 mm from the reached point
+        const double back = i % 2 ? 2e-6 : 1e-6, before = i == n + 1 ? 0.0 : (i % 2 ? 1e-6 : 2e-6);
+        in.penetration = Real(double(inputs(n, n).penetration) + back);
+        in.dr_disp[1] = Real(before - back);
+        in.dr_disp[2] = Real(back - before);
+      }
+      const double angle = i > 0 ? 1e-3 * std::sin(0.1 * i) : 0.0;
+      const Real d_rot[4] = {Real(std::cos(angle)), Real(-std::sin(angle)), Real(std::sin(angle)),
+                             Real(std::cos(angle))};
+      apply(pt, in);
+      std::copy(d_rot, d_rot + 4, pt.d_rot);
+      pt.call();
+      full.call(model, in, d_rot);
+      differences += !std::equal(full.state.begin(), full.state.end(), pt.state.begin());
+      differences += !std::equal(full.stress, full.stress + 3, pt.stress);
+      elastic += i > n && pt.spd == Real(0);
+    }
+    CHECK(differences == 0);
+    CHECK(elastic == n);  // every increment of the second half took the elastic path
+    CHECK(pt.state[slot::plastic_s1] != Real(0));
+    CHECK(pt.state[slot::crack_s2] != Real(0));
+  }
 }

@@ -16,15 +16,23 @@
 //            paper set scaled per parameter by 10^(i8/16); for modes 0, 1, 3
 //            one byte per entry from props(15) on (controls, shear sign,
 //            extra entries: a table of interesting values, or a raw double);
-//            then up to 3 overrides (index byte, raw double).
+//            then up to 3 overrides (index byte, raw double). The target
+//            lowers the substep budget props(18) to 10^4 where it is 0 (the
+//            default, 10^5) or a larger valid count (up to 10^9): with a
+//            tolerance no substep meets (STOL 1e-309) one increment spends
+//            the whole budget, hours at 10^9; below the budget the same code
+//            runs, and the rule [1, 1e9] itself is a unit test
+//            (test_parameters.cpp).
 //   start    one flag byte: incoming stress and sed all 0, or one value each.
 //   calls    1 + (byte % 8) calls. Per call: up to 3 state corruptions (point,
 //            slot, value: garbage a corrupted restart could hold), then per
 //            point the penetration (small kinds add to the previous one) and
-//            nDir drDisp components. The target stops an input early once its
-//            points have spent 200 000 substeps (SDV 19 + 20) in all: tight
-//            tolerances legitimately cost up to the budget of 10^5 substeps
-//            per point and increment, and repeating that teaches nothing.
+//            nDir drDisp components. The target skips an input's remaining
+//            calls once its points have spent 10 000 substeps (SDV 19 + 20)
+//            in all: tight tolerances legitimately cost up to the budget of
+//            10^5 substeps per point and increment (and the fallback chain
+//            four times that), and repeating that teaches nothing; one such
+//            call took 0.1-1 s under the sanitizers (docs/robustness.md).
 //
 // A value is a kind byte and its payload (see Value): 0, small, tiny (down to
 // denormals), huge (up to 1e308), NaN, +-infinity, raw IEEE bits, -1e36 (the

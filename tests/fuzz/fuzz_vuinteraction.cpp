@@ -51,6 +51,11 @@ using mj_fuzz::Reader;
 namespace slot = mortar::slot;
 constexpr int kSlots = mortar::kStateCount;  // 23
 constexpr const char* kName = "FUZZ-JOINT";
+// Substeps (SDV 19 + 20) an input's points may spend before its remaining
+// calls are skipped (fuzz_input.hpp, "calls").
+constexpr double kInputSubstepBudget = 1e4;
+// The largest substep budget per increment (props(18)) an input gets.
+constexpr double kFuzzMaxSubsteps = 1e4;
 
 size_t count(long n) { return n > 0 ? size_t(n) : 0; }
 bool finite(double x) { return std::isfinite(x); }
@@ -261,6 +266,14 @@ void decode_props(Reader& r, Block& b) {
     const double value = r.f64();
     if (!p.empty()) p[index % p.size()] = value;
   }
+  // The substep budget, props(18), lowered to kFuzzMaxSubsteps where the
+  // input leaves it at the default (0: 10^5) or sets a larger valid one
+  // (fuzz_input.hpp, "props").
+  if (p.size() > 17) {
+    double& budget = p[17];
+    if (budget == 0 || (budget == std::floor(budget) && budget > kFuzzMaxSubsteps && budget <= 1e9))
+      budget = kFuzzMaxSubsteps;
+  }
   for (size_t i = 0; i < p.size(); ++i) b.props[i] = Real(p[i]);
 }
 
@@ -451,7 +464,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const int n_calls = 1 + r.u8() % 8;
   const long per_point = long(count(b.n_states)) * long(count(b.n_node_states));
   double substeps = 0;  // spent by this input so far (see fuzz_input.hpp)
-  for (int call = 0; call < n_calls && substeps < 2e5; ++call) {
+  for (int call = 0; call < n_calls && substeps < kInputSubstepBudget; ++call) {
     const int corruptions = r.u8() % 4;
     for (int c = 0; c < corruptions; ++c) {
       const int k = r.u8(), i = r.u8();

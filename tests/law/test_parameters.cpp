@@ -81,6 +81,12 @@ TEST_CASE("Parameters: optional controls from props 15-19, zero keeps the defaul
   props[15] = 0;
   props[17] = 2.5;  // not a whole number
   CHECK(read_props(props, 19, p, c).index == 17);
+  props[17] = 1e9;  // the largest budget (the fuzz target never passes it: fuzz_input.hpp)
+  REQUIRE(read_props(props, 19, p, c).ok());
+  CHECK(c.max_substeps == 1000000000);
+  props[17] = 1e9 + 1;
+  CHECK(read_props(props, 19, p, c).index == 17);
+  props[17] = 500;
   CHECK(read_props(props, 13, p, c).message().find("nProps >= 14") != std::string::npos);
   for (int bad : {-5, 0, 13}) {
     const ValidationError e = read_props(props, bad, p, c);

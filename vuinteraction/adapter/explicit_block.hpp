@@ -56,14 +56,7 @@ double finite_or_zero(Real x) {
   return std::isfinite(double(x)) ? double(x) : 0.0;
 }
 
-// Without a branch per value (it runs on every point-update): x * 0 is 0 for
-// a finite x and NaN otherwise, and a NaN stays in the sum.
-template <class Real>
-bool all_finite(const Real* a, int n) {
-  double zero = 0;
-  for (int i = 0; i < n; ++i) zero += double(a[i]) * 0;
-  return zero == 0;
-}
+using mortar::all_finite;
 
 // One call in the adapter's own terms: points k = 0 .. n_points-1, each
 // entry point filling in where its arguments lie.
@@ -207,8 +200,8 @@ struct ExplicitBlock {
   // initialised flag (SDV 23) are 0 or 1. The law reads the open flag as a
   // bool, so a corrupted 0.5 or NaN would silently become "open".
   static bool flags_valid(const Real* st) {
-    auto flag = [](Real x) { return x == Real(0) || x == Real(1); };
-    return flag(st[mortar::slot::open]) && flag(st[mortar::slot::initialised]);
+    auto flag = [](Real x) { return (x == Real(0)) | (x == Real(1)); };
+    return flag(st[mortar::slot::open]) & flag(st[mortar::slot::initialised]);
   }
 
   // The law's traction in Abaqus's signs: pressure positive, shear_sign * tau.
@@ -234,6 +227,60 @@ struct ExplicitBlock {
     return static_cast<int>(r.status.failure);
   }
 
+  // Most point-updates (the elastic shortcut, docs/architecture.md): a valid state
+  // whose increment mortar::elastic_increment proves elastic, integrated to
+  // the very result integrate_increment would return, and only the slots such
+  // an increment changes written, as integrate_point would write them
+  // (StateStorage::store_elastic). The state lives in registers here: nothing
+  // takes its address. Returns kNotElastic, having written nothing, for any
+  // other point, which integrate_point then integrates (loading it again);
+  // otherwise integrate_point's return value.
+  static constexpr int kNotElastic = -1;
+  int elastic_point(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st) const {
+    namespace slot = mortar::slot;
+    // mortar::state_valid with its finite test on the array (vector loads;
+    // the open flag, SDV 15, among the values, is 0 or 1 by flags_valid, and
+    // a float pair is finite when both its parts are, which consistent()
+    // checks).
+    const bool flags = flags_valid(st), pairs = storage.consistent(st), finite = all_finite(st, slot::substeps_accepted);
+    if (!(flags & pairs & finite)) return kNotElastic;
+    mortar::State s;
+    storage.load(st, s);
+    if (!mortar::state_in_range(s)) return kNotElastic;
+    if (counts.n_dir == 3 && !is_identity(d_rot_of(k))) {
+      rotate_tangential_state(d_rot_of(k), s);
+      // A turn can overflow a finite vector near the range's end; the law
+      // then rejects the state (check_state), which the full path reports.
+      const double turned[] = {s.plastic[1], s.plastic[2], s.crack[1], s.crack[2], s.separation[1], s.separation[2]};
+      if (!all_finite(turned, 6)) return kNotElastic;
+    }
+    const bool first = st[slot::initialised] == Real(0);
+    mortar::IncrementResult r;
+    if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kNotElastic;
+    // Fixed counts, so that the checks and copies are a few instructions
+    // rather than loops: in 2D the third component is not an output.
+    Real out[4];
+    abaqus_stress(setup, r.traction, out);
+    if (counts.n_dir == 2) out[2] = Real(0);
+    out[3] = Real(r.elastic_energy);
+    // In double precision every value is finite already (the state's test
+    // above, elastic_increment's); a float may overflow.
+    if constexpr (StateStorage<Real>::kSingle) {
+      if (!all_finite(out, 4)) return reject_point(k, mortar::Failure::non_finite_result);
+    }
+    if (!storage.store_elastic(s, st)) return reject_point(k, mortar::Failure::non_finite_result);
+    if (first) {
+      st[slot::reference_penetration] = Real(penetration_of(k));
+      st[slot::initialised] = Real(1);
+    }
+    Real* stress_k = stress_of(k);
+    stress_k[0] = out[0];
+    stress_k[1] = out[1];
+    if (counts.n_dir == 3) stress_k[2] = out[2];
+    write_energies(k, double(out[3]), 0.0);  // spd: no dissipation
+    return 0;
+  }
+
   // Integrates point k and writes its outputs. Returns the law's Failure code.
   int integrate_point(const Setup& setup, const StateStorage<Real>& storage, int k) const {
     namespace slot = mortar::slot;
@@ -243,12 +290,16 @@ struct ExplicitBlock {
       return 0;
     }
     Real* st = state_of(k);
+    if (const int code = elastic_point(setup, storage, k, st); code != kNotElastic) return code;
     if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
     storage.load(st, s);
     if (counts.n_dir == 3) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
-    const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, separation_increment(k, st, s));
+    const mortar::Vec3 d = separation_increment(k, st, s);
+    // elastic_point has tried the shortcut on this state and increment (or
+    // declined a state the law rejects before it).
+    const mortar::IncrementResult r = mortar::integrate_declined_increment(setup.model, s, d);
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
     // The law's result in this routine's precision: a double beyond a float's
     // range would come back as infinity. Checked before anything is stored.

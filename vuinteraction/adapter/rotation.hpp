@@ -63,9 +63,12 @@ RotationCheck check_rotation(const Real* drot) {
 // Exactly the unit matrix: nothing turns, and nothing is touched, so that an
 // unrotated analysis stays bit for bit what it was (1*x + 0*y would turn a
 // -0 into +0).
+// One comparison (it runs twice on every point-update in 3D): a sum of
+// magnitudes is 0 exactly when each is (a NaN or an infinity makes it NaN or
+// infinite).
 template <class Real>
 bool is_identity(const Real* drot) {
-  return drot[0] == Real(1) && drot[1] == Real(0) && drot[2] == Real(0) && drot[3] == Real(1);
+  return std::fabs(drot[0] - Real(1)) + std::fabs(drot[1]) + std::fabs(drot[2]) + std::fabs(drot[3] - Real(1)) == 0;
 }
 
 // Brings the tangential components of the state's in-plane vectors (plastic,

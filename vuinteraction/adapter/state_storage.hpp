@@ -12,11 +12,13 @@
 //            With DEPVAR 23..33, plain floats, and one warning per process.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdio>
 #include <type_traits>
 
 #include "adapter/report.hpp"
+#include "mortar/finite.hpp"
 #include "mortar/state.hpp"
 
 namespace mj_adapter {
@@ -42,8 +44,10 @@ struct StateStorage {
   bool consistent(const Real* st) const {
     if constexpr (kSingle) {
       if (!pairs) return true;
-      for (const mortar::SlotPair& p : mortar::kPairedSlots)
-        if (!mortar::pair_consistent(st[p.high], st[p.low])) return false;
+      // Without a branch per pair: it runs on every point-update.
+      int all = 1;
+      mortar::for_each_pair_slot([&](int, int high, int low) { all &= mortar::pair_consistent(st[high], st[low]); });
+      return all;
     }
     return true;
   }
@@ -55,11 +59,56 @@ struct StateStorage {
     mortar::load_state(st, s);
   }
 
+  // What store() changes after an elastic increment (mortar::elastic_increment):
+  // the separation (SDV 12-14), the open flag, the counts and status (SDV
+  // 19-21) and the tangential components a rotation turns (SDV 2-3, 5-6); the
+  // value store() would write into any other slot is the one it read (a
+  // finite Real, to double and back). With float pairs everything store()
+  // writes, since it rewrites each pair as the rounding of its value (a pair
+  // it did not write itself may round differently). False, with nothing
+  // written, when a value does not fit in Real (the full path's rejection).
+  bool store_elastic(const mortar::State& s, Real* st) const {
+    namespace slot = mortar::slot;
+    if constexpr (kSingle) {
+      if (pairs) {
+        // Every slot store() writes, through a copy checked before it is
+        // stored: the pairs' rounding stays out of line (mortar::store_state_pairs).
+        float end[mortar::kPairedStateCount];
+        std::copy(st, st + mortar::kPairedStateCount, end);
+        mortar::store_state_pairs(s, end);
+        if (!mortar::all_finite(end, mortar::kPairedStateCount)) return false;
+        std::copy(end, end + mortar::kPairedStateCount, st);
+        return true;
+      }
+    }
+    const Real v[] = {Real(s.plastic[1]), Real(s.plastic[2]),    Real(s.crack[1]),     Real(s.crack[2]),
+                      Real(s.separation[0]), Real(s.separation[1]), Real(s.separation[2])};
+    if constexpr (kSingle) {  // a finite double is itself
+      if (!mortar::all_finite(v, 7)) return false;
+    }
+    st[slot::plastic_s1] = v[0];
+    st[slot::plastic_s2] = v[1];
+    st[slot::crack_s1] = v[2];
+    st[slot::crack_s2] = v[3];
+    for (int i = 0; i < 3; ++i) st[slot::separation_n + i] = v[4 + i];
+    store_counts(s, st);
+    return true;
+  }
+
   void store(const mortar::State& s, Real* st) const {
     if constexpr (kSingle) {
       if (pairs) return mortar::store_state_pairs(s, st);
     }
     mortar::store_state(s, st);
+  }
+
+ private:
+  static void store_counts(const mortar::State& s, Real* st) {
+    namespace slot = mortar::slot;
+    st[slot::open] = Real(s.open ? 1 : 0);
+    st[slot::substeps_accepted] = Real(s.substeps_accepted);
+    st[slot::substeps_rejected] = Real(s.substeps_rejected);
+    st[slot::status] = Real(s.status);
   }
 };
 

@@ -14,6 +14,7 @@
 #include "mortar/integration/substepper.hpp"
 #include "mortar/physics/damage.hpp"
 #include "mortar/physics/elasticity.hpp"
+#include "mortar/result.hpp"
 
 namespace mortar {
 
@@ -38,8 +39,9 @@ inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
 
   const Parameters& p = M.p;
   const double s = std::max(0.0, 1.0 - y.wI / p.GIC - y.wII / p.GIIC);
-  const double t = y.wIII > 0 ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * std::exp(-p.m * y.wIII) : M.tan_phi0;
-  const double C_t = M.cohesion_term / t;
+  const bool worn = y.wIII > 0;
+  const double t = worn ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * std::exp(-p.m * y.wIII) : M.tan_phi0;
+  const double C_t = worn ? M.cohesion_term / t : M.cohesion_over_tan_phi0;
   const double alpha = s * 0.5 * (C_t - p.ft0 * t), beta = s * 0.5 * (C_t + p.ft0 * t);
   auto inside = [&](const Vec3& sigma) {
     const double tn = sigma[0] * t;
@@ -52,6 +54,28 @@ inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
   const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
   const Vec3 e0 = y.elastic_separation();
   return inside(K.cwiseProduct(e0)) && inside(K.cwiseProduct(e0 + d));
+}
+
+// An increment certainly_elastic() proves elastic, booked as integrate_with()
+// books one elastic segment over all of d, whatever the scheme: the same sum
+// and the same functions of the end state, no dissipation (x - x = +0, the
+// result's defaults), no substeps. False (state untouched) when it cannot
+// prove it or the end lies beyond double's range (the full path reports that).
+// Inline: the adapters' per-point loops call it (vuinteraction/adapter).
+inline bool elastic_increment(const Model& M, State& state, const Vec3& d, IncrementResult& res) {
+  if (!certainly_elastic(M, state, d)) return false;
+  const Vec3 separation0 = state.separation;
+  state.separation += d;
+  res.traction = traction_of(M, state);
+  res.elastic_energy = elastic_energy(M, state);
+  const double finite = state.separation.sum() + res.traction.sum() + res.elastic_energy;
+  if (!(finite - finite == 0)) {
+    state.separation = separation0;
+    res = IncrementResult{};
+    return false;
+  }
+  state.substeps_accepted = state.substeps_rejected = state.status = 0;
+  return true;
 }
 
 }  // namespace mortar

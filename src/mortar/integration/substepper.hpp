@@ -64,7 +64,7 @@ class Substepper {
 
 // Round-off scale of the regime boundary delta_e_n = 0 at a state.
 inline double boundary_eps(const Model& M, const State& y) {
-  return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.p.ft0 / M.p.kn});
+  return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.separation_floor});
 }
 
 }  // namespace mortar
