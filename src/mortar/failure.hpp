@@ -8,7 +8,7 @@ namespace mortar {
 
 enum class Failure : int {
   none = 0,
-  too_many_substeps = 1,     // accepted + rejected substeps exceeded Controls::max_substeps
+  too_many_substeps = 1,     // substeps + relaxation steps exceeded Controls::max_substeps
   relaxation_failed = 2,     // return at fixed separation found no surface point
   too_many_switches = 3,     // more open/closed switches in one increment than allowed
   non_finite_increment = 4,  // the separation increment holds NaN or infinity

@@ -188,11 +188,11 @@ constexpr Rung kChain[] = {
     {Scheme::modified_euler, 64},
     {Scheme::forward_euler, 1024},
 };
-// The substeps (accepted + rejected) the whole chain may spend, in units of
-// Controls::max_substeps: the bound on its cost. Worst case of one call: the
-// first attempt (its own budgets), then at most 4 x max_substeps substeps of
-// the explicit schemes over at most 8 + 64 + 1024 pieces (each with the
-// per-increment bounds on segments, crossing cuts and relaxation steps);
+// The substeps (accepted + rejected) and relaxation steps the whole chain may
+// spend, in units of Controls::max_substeps: the bound on its cost. Worst case
+// of one call: the first attempt (its own budgets), then at most
+// 4 x max_substeps steps of the explicit schemes over at most 8 + 64 + 1024
+// pieces (each with the per-increment bounds on segments and crossing cuts);
 // measured at most 0.36 s for one increment, almost all of it the implicit
 // scheme's own Newton budget in the first attempt. Nothing is allocated.
 constexpr long kFallbackBudget = 4;
@@ -203,6 +203,7 @@ void add_counts(IntegrationStatus& sum, const IntegrationStatus& piece) {
   sum.substeps_rejected += piece.substeps_rejected;
   sum.regime_switches += piece.regime_switches;
   sum.relaxations += piece.relaxations;
+  sum.relaxation_steps += piece.relaxation_steps;
   sum.newton_iterations += piece.newton_iterations;
   sum.plastic = sum.plastic || piece.plastic;
   sum.min_substep_hit = sum.min_substep_hit || piece.min_substep_hit;
@@ -229,7 +230,7 @@ IncrementResult run_pieces(Model R, const State& start, State& end, const Vec3& 
     const Vec3 target = start.separation + (i == pieces ? d : Vec3((double(i) / pieces) * d));
     const IncrementResult r = attempt(R, end, target - end.separation, i == pieces ? tangent : nullptr);
     add_counts(total.status, r.status);
-    budget -= r.status.substeps_accepted + r.status.substeps_rejected;
+    budget -= r.status.work();
     if (!r.status.ok()) return total;
     total.traction = r.traction;
     total.elastic_energy = r.elastic_energy;

@@ -57,7 +57,7 @@ struct Controls {
   double ftol = 1e-8;        // yield-surface tolerance, relative to max(|sigma|, ft0)
   double min_substep = 1e-4; // smallest substep, as a fraction of the increment
                              // (implicit: the smallest plastic substep after halvings)
-  int max_substeps = 100000; // accepted + rejected substeps allowed per increment
+  int max_substeps = 100000; // substeps (accepted + rejected) and relaxation steps allowed per increment
 };
 
 // The first rule a parameter or control breaks; ok() when none.

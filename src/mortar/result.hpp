@@ -13,6 +13,9 @@ struct IntegrationStatus {
   int substeps_rejected = 0;
   int regime_switches = 0;    // open <-> closed inside the increment
   int relaxations = 0;        // returns at fixed separation (closure jump, snap-back)
+  int relaxation_steps = 0;   // their steps, spent from the substep budget like substeps
+  // Substeps and relaxation steps: what Controls::max_substeps bounds.
+  long work() const { return long(substeps_accepted) + substeps_rejected + relaxation_steps; }
   bool plastic = false;       // any plastic flow in the increment
   bool min_substep_hit = false;  // a substep was accepted at the minimum size above STOL
   Failure failure = Failure::none;

@@ -37,7 +37,11 @@ Point relaxation_step(const Model& M, const Point& P, double dl) {
 bool relax(const Model& M, Point& P, IntegrationStatus& st, bool snapback) {
   ++st.relaxations;
   st.plastic = true;
-  for (int step = 0; step < kMaxRelaxSteps; ++step) {
+  // Its steps come out of the increment's substep budget (Controls::
+  // max_substeps, docs/model.md 9), so that the fallback chain's pieces, each
+  // of which may relax, stay within the chain's bound on work.
+  const long steps = std::min<long>(kMaxRelaxSteps, long(M.controls.max_substeps) - st.work());
+  for (long step = 0; step < steps; ++step, ++st.relaxation_steps) {
     const Surface S = surface_of(M, P.y);
     const double F = yield_function(P.sigma, S);
     const double tol = yield_tolerance(M, P.sigma);

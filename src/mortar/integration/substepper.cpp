@@ -23,7 +23,7 @@ double Substepper::run(const Vec3& d) {
   // Every pass of the loop counts against the budget, so no path through
   // it (cuts, relaxations) can spin forever.
   for (long pass = 0; T < 1; ++pass) {
-    if (st.substeps_accepted + st.substeps_rejected >= c.max_substeps || pass >= 4L * c.max_substeps) {
+    if (st.work() >= c.max_substeps || pass >= 4L * c.max_substeps) {
       st.failure = Failure::too_many_substeps;
       return T;
     }
