@@ -17,7 +17,7 @@
 //            one byte per entry from props(15) on (controls, shear sign,
 //            extra entries: a table of interesting values, or a raw double);
 //            then up to 3 overrides (index byte, raw double). The target
-//            lowers the substep budget props(18) to 10^4 where it is 0 (the
+//            lowers the substep budget props(18) to 10^3 where it is 0 (the
 //            default, 10^5) or a larger valid count (up to 10^9): with a
 //            tolerance no substep meets (STOL 1e-309) one increment spends
 //            the whole budget, hours at 10^9; below the budget the same code
@@ -28,11 +28,12 @@
 //            slot, value: garbage a corrupted restart could hold), then per
 //            point the penetration (small kinds add to the previous one) and
 //            nDir drDisp components. The target skips an input's remaining
-//            calls once its points have spent 10 000 substeps (SDV 19 + 20)
+//            calls once its points have spent 2 000 substeps (SDV 19 + 20)
 //            in all: tight tolerances legitimately cost up to the budget of
-//            10^5 substeps per point and increment (and the fallback chain
-//            four times that), and repeating that teaches nothing; one such
-//            call took 0.1-1 s under the sanitizers (docs/robustness.md).
+//            10^5 substeps per point and increment with nProps < 18 (and the
+//            fallback chain four times that), and repeating that teaches
+//            nothing; such inputs took most of a long run's time
+//            (docs/robustness.md).
 //
 // A value is a kind byte and its payload (see Value): 0, small, tiny (down to
 // denormals), huge (up to 1e308), NaN, +-infinity, raw IEEE bits, -1e36 (the

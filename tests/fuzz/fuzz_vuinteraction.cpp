@@ -53,9 +53,9 @@ constexpr int kSlots = mortar::kStateCount;  // 23
 constexpr const char* kName = "FUZZ-JOINT";
 // Substeps (SDV 19 + 20) an input's points may spend before its remaining
 // calls are skipped (fuzz_input.hpp, "calls").
-constexpr double kInputSubstepBudget = 1e4;
+constexpr double kInputSubstepBudget = 2e3;
 // The largest substep budget per increment (props(18)) an input gets.
-constexpr double kFuzzMaxSubsteps = 1e4;
+constexpr double kFuzzMaxSubsteps = 1e3;
 
 size_t count(long n) { return n > 0 ? size_t(n) : 0; }
 bool finite(double x) { return std::isfinite(x); }
