@@ -7,19 +7,29 @@
 namespace mortar {
 
 void correct_drift(const Model& M, Point& P, Branches grow) {
+  SurfaceAt at = surface_at(M, P);
+  correct_drift(M, P, at, grow);
+}
+
+// Each candidate's surface is evaluated once: it decides whether the
+// candidate is taken, and a taken one is the next iterate.
+void correct_drift(const Model& M, Point& P, SurfaceAt& at, Branches grow) {
+  double F = yield_of(P, at);
   for (int it = 0; it < 8; ++it) {
-    const Surface S = surface_of(M, P.y);
-    const double F = yield_function(P.sigma, S);
     if (F <= yield_tolerance(M, P.sigma)) return;
     const RateStiffness k = rate_stiffness(M, P.y, grow.normal, grow.shear);
-    const Flow f = flow_of(M, P.sigma, S, k.on_flow);
+    const Flow f = flow_of(M, P.sigma, at.S, k.on_flow, at.radius);
     const Vec3 e0 = P.y.elastic_separation();
     if (f.denominator > 0) {
       Point C = P;
       add(C, along_flow(M, P.sigma, f, F / f.denominator), 1.0);
       settle(M, C, e0, grow);
-      if (std::abs(yield_of(M, C)) < F) {
+      const SurfaceAt at_C = surface_at(M, C);
+      const double FC = yield_of(C, at_C);
+      if (std::abs(FC) < F) {
         P = C;
+        at = at_C;
+        F = FC;
         continue;
       }
     }
@@ -37,8 +47,12 @@ void correct_drift(const Model& M, Point& P, Branches grow) {
     C.y.dissipation_plastic += P.sigma.dot(dp);
     C.sigma -= (F / nn) * f.dF;
     settle(M, C, e0, grow);
-    if (!(std::abs(yield_of(M, C)) < F)) return;
+    const SurfaceAt at_C = surface_at(M, C);
+    const double FC = yield_of(C, at_C);
+    if (!(std::abs(FC) < F)) return;
     P = C;
+    at = at_C;
+    F = FC;
   }
 }
 

@@ -14,5 +14,8 @@ namespace mortar {
 // i.e. works and damage that decrease.
 // `grow`: the damage branches of the substep being corrected.
 void correct_drift(const Model& M, Point& P, Branches grow = {});
+// The same with the surface at P (surface_at(M, P)), which on return is the
+// surface at the corrected P.
+void correct_drift(const Model& M, Point& P, SurfaceAt& at, Branches grow = {});
 
 }  // namespace mortar

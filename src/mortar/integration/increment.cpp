@@ -53,8 +53,9 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
   auto tol_at = [&](double a) { return yield_tolerance(M_, K.cwiseProduct(e0 + a * rest)); };
   auto sample = [&](double a) { return RootSample{F_at(a), tol_at(a)}; };
-  const double F0 = yield_function(P_.sigma, S), tol0 = tol_at(0);
-  const Vec3 n = flow_of(M_, P_.sigma, S, rate_stiffness(M_, P_.y).on_flow).dF;
+  SurfaceAt at{S, shear_radius(P_.sigma, S)};
+  const double F0 = yield_of(P_, at), tol0 = tol_at(0);
+  const Vec3 n = flow_of(M_, P_.sigma, S, rate_stiffness(M_, P_.y).on_flow, at.radius).dF;
   const Vec3 dsig = K.cwiseProduct(rest);
   const bool on_surface = std::abs(F0) <= tol0;
   const bool loading = n.dot(dsig) > 0;
@@ -62,7 +63,7 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   // (elastic) predictor, dF . K dd > 0, however small its rise: the same for
   // every cut of the increment and every scheme (docs/model.md 7.1, Decision -
   // loading from the surface).
-  if (F_at(frac) <= tol_at(frac) && !(on_surface && loading)) {
+  if (!(on_surface && loading) && F_at(frac) <= tol_at(frac)) {
     P_.y.separation += frac * rest;
     P_.sigma = traction_of(M_, P_.y);
     if (tangent_) {
@@ -74,7 +75,8 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
     return frac;
   }
   double a_y = 0;
-  if (F0 > tol0 && scheme_.traits.relaxes_start_outside) {
+  const bool relaxed = F0 > tol0 && scheme_.traits.relaxes_start_outside;
+  if (relaxed) {
     if (!relax(M_, P_, st_, false)) {
       st_.failure = Failure::relaxation_failed;
       return 0;
@@ -98,9 +100,16 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
     P_.sigma = traction_of(M_, P_.y);
     if (tangent_) intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
   }
+  // The return at fixed separation changes the works; the elastic part only
+  // the traction.
+  if (relaxed) {
+    at = surface_at(M_, P_);
+  } else if (a_y > 0) {
+    at.radius = shear_radius(P_.sigma, S);
+  }
   st_.plastic = true;
   ended_plastic_ = true;
-  const double done = substepper_.run((1 - a_y) * rest);
+  const double done = substepper_.run((1 - a_y) * rest, at);
   at_boundary_ = substepper_.at_boundary();
   return a_y + (1 - a_y) * done;
 }

@@ -15,6 +15,22 @@ struct Point {
 };
 
 inline double yield_of(const Model& M, const Point& P) { return yield_function(P.sigma, surface_of(M, P.y)); }
+
+// The surface of a point's works and the shear radius of its traction on it:
+// what F (Eq. 2), the flow (Eq. 10) and the rate statement (Eqs. 16-19) read
+// at one state. The substepper evaluates it once per substep state and hands
+// it along (docs/model.md 7.1): settle() and a landing on the regime boundary
+// change no work, so an end point's surface stays that of the step; its
+// traction, re-derived by settle(), takes a new radius.
+struct SurfaceAt {
+  Surface S;
+  ShearRadius radius;
+};
+inline SurfaceAt surface_at(const Model& M, const Point& P) {
+  const Surface S = surface_of(M, P.y);
+  return {S, shear_radius(P.sigma, S)};
+}
+inline double yield_of(const Point& P, const SurfaceAt& at) { return yield_function(P.sigma, at.S, at.radius); }
 inline bool outside_surface(const Model& M, const Point& P) {
   return active_surfaces(M, P.sigma, surface_of(M, P.y)).any();
 }

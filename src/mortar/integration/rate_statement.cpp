@@ -27,10 +27,10 @@ Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
 namespace {
 
 // Rates of one stage on given branches of the open regime (rate_stiffness).
-Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3& dd, bool grow_n, bool grow_s,
-                   Vec3* dp = nullptr) {
+Rates branch_rates(const Model& M, const Point& P, const Surface& S, const ShearRadius& radius, const Vec3& dd,
+                   bool grow_n, bool grow_s, Vec3* dp = nullptr) {
   const RateStiffness k = rate_stiffness_over(M, P.y, dd, grow_n, grow_s);
-  const Flow f = flow_of(M, P.sigma, S, k.on_flow);
+  const Flow f = flow_of(M, P.sigma, S, k.on_flow, radius);
   const Vec3 k_dd = k.times_separation(dd);
   const double num = f.dF.dot(k_dd);
   Rates r;
@@ -53,16 +53,21 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Vec3&
 }
 
 // The secant (elastic) predictor leaves the surface: dF . K dd > 0.
-bool secant_loads(const Model& M, const Point& P, const Surface& S, const Vec3& dd) {
+bool secant_loads(const Model& M, const Point& P, const Surface& S, const ShearRadius& radius, const Vec3& dd) {
   const Vec3 K = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open);
-  return flow_of(M, P.sigma, S, K).dF.dot(K.cwiseProduct(dd)) > 0;
+  return flow_of(M, P.sigma, S, K, radius).dF.dot(K.cwiseProduct(dd)) > 0;
 }
 
 }  // namespace
 
 Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
-  const Surface S = surface_of(M, P.y);
-  if (!P.y.open) return branch_rates(M, P, S, dd, true, true);
+  return stage(M, P, surface_at(M, P), dd, allowed);
+}
+
+Rates stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec3& dd, Branches allowed) {
+  const Surface& S = at.S;
+  const ShearRadius& radius = at.radius;
+  if (!P.y.open) return branch_rates(M, P, S, radius, dd, true, true);
   // From the most growing candidate the secant rule admits, freeze each
   // component whose damage the candidate's solution would decrease, until
   // the branches agree with their own solution (at most two freezes). A
@@ -70,12 +75,12 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
   // growing-branch solution does not decide the normal branch.
   Branches b{allowed.normal, allowed.shear && !slip_reverses(P.y, dd)};
   Vec3 dp;
-  Rates r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+  Rates r = branch_rates(M, P, S, radius, dd, b.normal, b.shear, &dp);
   if (r.snapback && b.shear != allowed.shear) {
     // The unloading slip has no strain-driven solution: the growing branch
     // stands, as for any frozen branch below.
     b = allowed;
-    r = branch_rates(M, P, S, dd, b.normal, b.shear, &dp);
+    r = branch_rates(M, P, S, radius, dd, b.normal, b.shear, &dp);
   }
   r.grow = b;
   if (r.snapback) return r;
@@ -83,11 +88,11 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
     const Branches next{b.normal && damage_grows_normal(M, P.y, dd, dp),
                         b.shear && damage_grows_shear(M, P.y, dd, dp)};
     if (next.normal == b.normal && next.shear == b.shear) break;
-    Rates frozen = branch_rates(M, P, S, dd, next.normal, next.shear, &dp);
+    Rates frozen = branch_rates(M, P, S, radius, dd, next.normal, next.shear, &dp);
     // No strain-driven solution on the frozen branch (a snap-back, or no
     // flow although the secant predictor leaves the surface): the more
     // growing one stands (settle keeps the damage from decreasing).
-    if (frozen.snapback || (!frozen.plastic && secant_loads(M, P, S, dd))) break;
+    if (frozen.snapback || (!frozen.plastic && secant_loads(M, P, S, radius, dd))) break;
     b = next;
     r = frozen;
     r.grow = b;

@@ -41,5 +41,8 @@ inline bool snaps_back(const Flow& f) {
 // frozen what its first stage froze, so that the pair integrates one branch
 // and settle() finds the traction it integrated).
 Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed = {});
+// The same with the surface at P, surface_at(M, P), which the substepper
+// carries from one substep to the next.
+Rates stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec3& dd, Branches allowed = {});
 
 }  // namespace mortar

@@ -51,26 +51,31 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
   const Point A = first_stage_end(P, dd, r1);
   grow_ = r1.grow;
   error_ = 0;
-  const Rates r2 = stage(M_, A, dd, r1.grow);
+  const SurfaceAt at_A = surface_at(M_, A);
+  const Rates r2 = stage(M_, A, at_A, dd, r1.grow);
   // The second stage entered the snap-back region: halve; at the smallest
   // substep the first stage alone stands (forward Euler).
   if (r2.snapback && dT > c.min_substep) return retry_with(halved(c, dT));
   if (r2.snapback) {
     st_.min_substep_hit = true;
     end_ = A;
+    end_surface_ = at_A.S;
   } else {
     end_ = P;
     add(end_, r1, 0.5);
     add(end_, r2, 0.5);
     end_.y.separation += dd;
-    error_ = local_error(r1, r2, end_);
+    end_surface_ = surface_of(M_, end_.y);
+    error_ = local_error(r1, r2, end_, end_surface_);
   }
   if (error_ > c.stol && dT > c.min_substep) {
     last_rejected_ = true;
     return retry_with(std::max(std::max(0.9 * std::sqrt(c.stol / error_), 0.1) * dT, c.min_substep));
   }
   if (error_ > c.stol) st_.min_substep_hit = true;
-  return step_to(end_);
+  Attempt a = step_to(end_);
+  a.surface = &end_surface_;
+  return a;
 }
 
 // A Heun substep that ends far outside the surface (an open, damaged joint:
@@ -79,9 +84,9 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
 // secant damage rule reads as complete normal damage. Such a substep is
 // rejected and halved (docs/robustness.md). Far: beyond 1e-3 of the traction
 // scale, the larger of |sigma| and ft0.
-double ModifiedEuler::recheck(Point& Q, double dT, bool switch_here) {
+double ModifiedEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) {
   if (switch_here || !(dT > M_.controls.min_substep)) return 0;
-  if (!(yield_of(M_, Q) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0))) return 0;
+  if (!(yield_of(Q, at) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0))) return 0;
   last_rejected_ = true;
   return halved(M_.controls, dT);
 }
@@ -89,9 +94,9 @@ double ModifiedEuler::recheck(Point& Q, double dT, bool switch_here) {
 // Not at a switch: the drift correction's plastic displacement would move
 // the point off the boundary again; the switch re-derives the traction in the
 // new regime and returns it to the surface if needed.
-void ModifiedEuler::commit(Point& P, const Point& Q, const Vec3&, double, double, bool switch_here) {
+void ModifiedEuler::commit(Point& P, const Point& Q, SurfaceAt& at, const Vec3&, double, double, bool switch_here) {
   P = Q;
-  if (!switch_here) correct_drift(M_, P, grow_);
+  if (!switch_here) correct_drift(M_, P, at, grow_);
 }
 
 double ModifiedEuler::next_size(double dT) {
@@ -106,14 +111,14 @@ double ModifiedEuler::next_size(double dT) {
 // 2001, Eq. for R_n+1), over the traction, the softening factor (relative)
 // and the wear exponent; the traction norm is floored at 1e-3 ft0 so that
 // states near zero traction do not force endless subdivision.
-double ModifiedEuler::local_error(const Rates& r1, const Rates& r2, const Point& N) const {
+double ModifiedEuler::local_error(const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const {
   const double floor = 1e-3 * M_.stress_scale;
   const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
   // The softening factor relative to what is left of it: where s runs out
   // (towards complete separation, kSeparated) an absolute error lets the
   // place of the separation depend on the cuts (docs/model.md 7.1).
   const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) /
-                     std::max(surface_of(M_, N.y).s, kSeparated);
+                     std::max(S.s, kSeparated);
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
   return std::max(e_sigma, std::max(e_s, e_t));
 }
@@ -159,16 +164,16 @@ void BackwardEuler::before_settle(const Point& Q) {
 // the traction re-derived from Eq. 1 then differs from the return's. Such a
 // step is halved; at the smallest substep the drift correction of the
 // explicit scheme returns it, and the tangent becomes approximate.
-double BackwardEuler::recheck(Point& Q, double dT, bool switch_here) {
+double BackwardEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) {
   drift_corrected_ = false;
-  if (switch_here || !(yield_of(M_, Q) > 10 * yield_tolerance(M_, Q.sigma))) return 0;
+  if (switch_here || !(yield_of(Q, at) > 10 * yield_tolerance(M_, Q.sigma))) return 0;
   if (dT > M_.controls.min_substep) return halved(M_.controls, dT);
-  correct_drift(M_, Q);
+  correct_drift(M_, Q, at);
   drift_corrected_ = true;
   return 0;
 }
 
-void BackwardEuler::commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool) {
+void BackwardEuler::commit(Point& P, const Point& Q, SurfaceAt&, const Vec3& dd, double T, double dT, bool) {
   const bool carry = tangent_ && !drift_corrected_;
   if (carry) {
     // This step covers dT/(1 - T) of what is left of the increment.

@@ -35,6 +35,7 @@ struct Attempt {
   enum Kind { step, retry, fail, on_boundary } kind = step;
   const Point* end = nullptr;  // step, on_boundary: the end point before settle() (held by the
                                // scheme until its next attempt)
+  const Surface* surface = nullptr;  // step: the surface of end's works, when the scheme evaluated it
   double size = 0;             // retry: the substep size to try next
   Failure failure = Failure::none;
   double theta = 0;            // on_boundary: the fraction of the substep done
@@ -52,10 +53,13 @@ class SubstepScheme {
   virtual Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) = 0;
   // The end point Q, before settle() (the consistent tangent needs it).
   virtual void before_settle(const Point&) {}
-  // After settle(): a retry size when the substep is rejected, else 0.
-  virtual double recheck(Point&, double /*dT*/, bool /*switch_here*/) { return 0; }
-  // Accepts Q as the new P; T is the fraction of the plastic part done before.
-  virtual void commit(Point& P, const Point& Q, const Vec3& /*dd*/, double /*T*/, double /*dT*/, bool /*switch_here*/) {
+  // After settle(): a retry size when the substep is rejected, else 0. `at`
+  // is the surface at Q (surface_at), kept so where the scheme changes Q.
+  virtual double recheck(Point&, SurfaceAt&, double /*dT*/, bool /*switch_here*/) { return 0; }
+  // Accepts Q as the new P; T is the fraction of the plastic part done
+  // before. `at`: the surface at Q, on return the surface at P.
+  virtual void commit(Point& P, const Point& Q, SurfaceAt&, const Vec3& /*dd*/, double /*T*/, double /*dT*/,
+                      bool /*switch_here*/) {
     P = Q;
   }
   // Size of the next substep after an accepted one of size dT.
@@ -83,15 +87,16 @@ class ModifiedEuler final : public SubstepScheme {
   ModifiedEuler(const Model& M, IntegrationStatus& st)
       : SubstepScheme(SchemeTraits{true, false, false, true}), M_(M), st_(st) {}
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
-  double recheck(Point& Q, double dT, bool switch_here) override;
-  void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
+  double recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) override;
+  void commit(Point& P, const Point& Q, SurfaceAt& at, const Vec3& dd, double T, double dT, bool switch_here) override;
   double next_size(double dT) override;
 
  private:
-  double local_error(const Rates& r1, const Rates& r2, const Point& N) const;
+  double local_error(const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const;
   const Model& M_;
   IntegrationStatus& st_;
   Point end_;
+  Surface end_surface_;  // of end_'s works: the error estimate's, and the next substep's
   Branches grow_;  // the first stage's damage branches (drift correction)
   double error_ = 0;
   bool last_rejected_ = false;
@@ -106,8 +111,8 @@ class BackwardEuler final : public SubstepScheme {
   Failure budget_spent(const IntegrationStatus& st) const override;
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   void before_settle(const Point& Q) override;
-  double recheck(Point& Q, double dT, bool switch_here) override;
-  void commit(Point& P, const Point& Q, const Vec3& dd, double T, double dT, bool switch_here) override;
+  double recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) override;
+  void commit(Point& P, const Point& Q, SurfaceAt& at, const Vec3& dd, double T, double dT, bool switch_here) override;
   double next_size(double dT) override { return 2 * dT; }
 
  private:

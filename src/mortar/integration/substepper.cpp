@@ -11,8 +11,9 @@ namespace {
 constexpr int kMaxCrossingCuts = 40;  // docs/model.md 6, regime switches inside an increment
 }  // namespace
 
-double Substepper::run(const Vec3& d) {
+double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   const Controls& c = M.controls;
+  at_ = at;
   at_boundary_ = false;
   cut_ = CrossingBracket{};
   cuts_ = 0;
@@ -35,15 +36,16 @@ double Substepper::run(const Vec3& d) {
     // it yields again is the segment's to find (the elastic-plastic
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
-    if (unloaded && yield_of(M, P) < -yield_tolerance(M, P.sigma)) return T;
+    if (unloaded && yield_of(P, at_) < -yield_tolerance(M, P.sigma)) return T;
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
-    const Rates r1 = stage(M, P, dd);
+    const Rates r1 = stage(M, P, at_, dd);
     if (r1.snapback) {  // no strain-driven solution from here
       if (!relax(M, P, st, true)) {
         st.failure = Failure::relaxation_failed;
         return T;
       }
+      at_ = surface_at(M, P);
       tangent.forget(st);
       continue;
     }
@@ -58,9 +60,12 @@ double Substepper::run(const Vec3& d) {
       return T;
     }
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
-    const Landing sep = separation(*a.end, dT);
+    // settle() and the landings change no work: SN is the surface of the
+    // substep's end before and after them.
+    const Surface SN = a.surface ? *a.surface : surface_of(M, a.end->y);
+    const Landing sep = separation(SN, dT);
     if (sep == Landing::cut) continue;
-    const Landing normal = normal_completion(*a.end, dT);
+    const Landing normal = normal_completion(*a.end, SN, dT);
     if (normal == Landing::cut) continue;
     const bool separates = sep == Landing::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
@@ -81,12 +86,14 @@ double Substepper::run(const Vec3& d) {
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
-    if (const double retry = scheme.recheck(Q, dT, lands); retry > 0) {
+    SurfaceAt at_Q{SN, shear_radius(Q.sigma, SN)};
+    if (const double retry = scheme.recheck(Q, at_Q, dT, lands); retry > 0) {
       dT = retry;
       ++st.substeps_rejected;
       continue;
     }
-    scheme.commit(P, Q, dd, T, dT, lands);
+    scheme.commit(P, Q, at_Q, dd, T, dT, lands);
+    at_ = at_Q;
     ++st.substeps_accepted;
     unloaded = !r1.plastic;
     T += dT;
@@ -133,9 +140,9 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
 // kSeparated is shortened to end on it (regula falsi on the substep size in
 // log(s_raw / kSeparated), bisection as a safeguard), so that where the joint
 // separates does not depend on the cuts; settle() then disintegrates it.
-Substepper::Landing Substepper::separation(const Point& N, double& dT) {
+Substepper::Landing Substepper::separation(const Surface& SN, double& dT) {
   if (!P.y.open) return Landing::none;
-  const double s0 = surface_of(M, P.y).s_raw, s1 = surface_of(M, N.y).s_raw;
+  const double s0 = at_.S.s_raw, s1 = SN.s_raw;
   if (separated(s0)) return Landing::none;
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
   return one_sided(sep_cut_, sep_cuts_, dT, std::log(s0 / kSeparated), g1, g1 < -1e-9, std::abs(g1) <= 1e-9,
@@ -155,17 +162,17 @@ Substepper::Landing Substepper::separation(const Point& N, double& dT) {
 // before settle(), cannot see it; so the substep that crosses is shortened to
 // end on it from above (regula falsi on the substep size, bisection as a
 // safeguard), within 1e-9 ft0 below it.
-Substepper::Landing Substepper::normal_completion(const Point& N, double& dT) {
+Substepper::Landing Substepper::normal_completion(const Point& N, const Surface& SN, double& dT) {
   if (!P.y.open || !(P.y.dn < 1) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
-  auto g = [&](const Point& X) {
-    const double tau = shear_norm(X.sigma), R = std::hypot(surface_of(M, X.y).alpha, tau);
+  auto g = [&](const Point& X, const ShearRadius& r) {
+    const double tau = r.tau, R = r.R;
     const double sliding = R > 0 ? tau / R : 0.0;
     const double left = kSeparated * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
     return (X.sigma[0] - left) / M.stress_scale;
   };
-  const double g0 = g(P);
+  const double g0 = g(P, at_.radius);
   if (!(g0 > 0)) return Landing::none;
-  const double g1 = g(N);
+  const double g1 = g(N, shear_radius(N.sigma, SN));
   const bool landed = g1 < 0 && g1 >= -1e-9;
   return one_sided(dn_cut_, dn_cuts_, dT, g0, g1, g1 < 0, landed, landed);
 }

@@ -20,10 +20,10 @@ class Substepper {
       : M(M), P(P), st(st), tangent(tangent), scheme(scheme) {}
 
   // Plastic substepping over the separation increment d, starting on the
-  // surface. Returns the fraction of d done: 1, or less when the regime
-  // switched inside (the point is then on the regime boundary) or on failure
-  // (st.failure set).
-  double run(const Vec3& d);
+  // surface; `at` is the surface at P (surface_at). Returns the fraction of
+  // d done: 1, or less when the regime switched inside (the point is then on
+  // the regime boundary) or on failure (st.failure set).
+  double run(const Vec3& d, const SurfaceAt& at);
   bool at_boundary() const { return at_boundary_; }  // the last run() stopped on the regime boundary
 
  private:
@@ -36,14 +36,14 @@ class Substepper {
   };
   Crossing crossing(const Point& N, const Vec3& dd, double& dT);
   // What a one-sided bracket (complete separation, complete normal damage)
-  // makes of a substep that ends at N.
+  // makes of a substep that ends at N (SN: the surface of its works).
   enum class Landing {
     none,   // stays on the near side (or was there already)
     cut,    // went past (or bracketing): retry with the new dT
     lands,  // ends on the boundary: accept, settle() completes the damage
   };
-  Landing separation(const Point& N, double& dT);
-  Landing normal_completion(const Point& N, double& dT);
+  Landing separation(const Surface& SN, double& dT);
+  Landing normal_completion(const Point& N, const Surface& SN, double& dT);
   Landing one_sided(CrossingBracket& b, int& cuts, double& dT, double g0, double g1, bool past, bool within,
                     bool lands);
   double end_on_boundary(const Point& N, double done);
@@ -54,6 +54,7 @@ class Substepper {
   TangentTracker& tangent;
   SubstepScheme& scheme;
   bool at_boundary_ = false;
+  SurfaceAt at_;  // the surface at P, evaluated once per substep state
   CrossingBracket cut_;
   int cuts_ = 0;
   CrossingBracket sep_cut_;

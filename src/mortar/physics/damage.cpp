@@ -26,7 +26,7 @@ void complete_normal_damage(const Model& M, State& y) {
 void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow) {
   if (y.open) {
     const Vec3 e = y.elastic_separation();
-    const double es = std::hypot(e[1], e[2]), es0 = std::hypot(e_start[1], e_start[2]);
+    const double es = hypot_of(e[1], e[2]), es0 = hypot_of(e_start[1], e_start[2]);
     double dn = y.dn, ds = y.ds;
     if (grow.normal && e[0] > 0) dn = std::clamp(1.0 - sigma[0] / (M.p.kn * e[0]), y.dn, 1.0);
     if (grow.shear && es > 0) ds = std::clamp(1.0 - shear_norm(sigma) / (M.p.ks * es), y.ds, 1.0);

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "mortar/parameters.hpp"
+#include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
@@ -32,12 +33,12 @@ inline bool slip_reverses(const State& y, const Vec3& dd) {
 
 inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, const Vec3& dp) {
   const Vec3 e = y.elastic_separation();
-  const double es = std::hypot(e[1], e[2]);
+  const double es = hypot_of(e[1], e[2]);
   if (!(es > 0)) return true;
   if (slip_reverses(y, dd)) return false;
   const double de = ((dd[1] - dp[1]) * e[1] + (dd[2] - dp[2]) * e[2]) / es;
   const double dcr = M.p.bs * (dp[1] * e[1] + dp[2] * e[2]) / es;
-  return y.ds * de <= dcr + 1e-14 * std::hypot(dd[1], dd[2]);
+  return y.ds * de <= dcr + 1e-14 * hypot_of(dd[1], dd[2]);
 }
 
 // The strength below which an open joint is completely separated

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "mortar/parameters.hpp"
+#include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
@@ -70,7 +71,7 @@ inline RateStiffness rate_stiffness(const Model& M, const State& y, bool grow_n 
   r.on_separation[2] = r.on_separation[1];
   r.on_flow[2] = r.on_flow[1];
   const Vec3 e = y.elastic_separation();
-  const double es = std::hypot(e[1], e[2]);
+  const double es = hypot_of(e[1], e[2]);
   if (grow_s && y.ds > 0 && y.ds < 1 && es > 0) {
     r.across_drop = p.ks * y.ds;
     r.axis[0] = e[1] / es;

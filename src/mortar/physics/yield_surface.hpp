@@ -14,6 +14,7 @@
 #include <Eigen/Core>
 
 #include "mortar/parameters.hpp"
+#include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
@@ -51,11 +52,25 @@ inline Surface surface_of(const Model& M, double wI, double wII, double wIII) {
 }
 inline Surface surface_of(const Model& M, const State& y) { return surface_of(M, y.wI, y.wII, y.wIII); }
 
-inline double shear_norm(const Vec3& sigma) { return std::hypot(sigma[1], sigma[2]); }
+inline double shear_norm(const Vec3& sigma) { return hypot_of(sigma[1], sigma[2]); }
+
+// |tau| and R = sqrt(alpha^2 + tau^2) of a traction on a surface: what the
+// yield function (Eq. 2) and the flow (Eq. 10) share, so that a caller
+// needing both at one point evaluates them once.
+struct ShearRadius {
+  double tau = 0, R = 0;
+};
+inline ShearRadius shear_radius(const Vec3& sigma, const Surface& S) {
+  const double tau = shear_norm(sigma);
+  return {tau, hypot_of(S.alpha, tau)};
+}
 
 // Eq. 2: F = sqrt(alpha^2 + tau^2) + sigma_n tan(phi) - beta.
+inline double yield_function(const Vec3& sigma, const Surface& S, const ShearRadius& r) {
+  return r.R + sigma[0] * S.tan_phi - S.beta;
+}
 inline double yield_function(const Vec3& sigma, const Surface& S) {
-  return std::hypot(S.alpha, shear_norm(sigma)) + sigma[0] * S.tan_phi - S.beta;
+  return yield_function(sigma, S, shear_radius(sigma, S));
 }
 
 // Tolerance on F: relative to the traction, floored at the tensile strength
@@ -119,13 +134,14 @@ void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const
 // the traction changes by -k_flow . m per unit lambda (see RateStiffness).
 // With `derivatives` the same evaluation also fills the derivatives of the
 // flow direction and the work rates (one code path for values and slopes).
-inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow,
+// `radius`: shear_radius(sigma, S), when the caller has it.
+inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow, const ShearRadius& radius,
                     LocalDerivatives* derivatives = nullptr) {
   const Parameters& p = M.p;
   Flow f;
   FlowEvaluation v;
-  v.tau = shear_norm(sigma);
-  v.R = std::hypot(S.alpha, v.tau);
+  v.tau = radius.tau;
+  v.R = radius.R;
   const double tau = v.tau, R = v.R;
   const double e1 = R > 0 ? sigma[1] / R : 0.0, e2 = R > 0 ? sigma[2] / R : 0.0;
   v.shear_dir = R > 0 ? tau / R : 0.0;  // |dG/dtau|
@@ -162,6 +178,10 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const V
   f.denominator = f.dF.dot(f.k_A_m) - f.hardening;
   if (derivatives) fill_derivatives(M, sigma, S, f, v, *derivatives);
   return f;
+}
+inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow,
+                    LocalDerivatives* derivatives = nullptr) {
+  return flow_of(M, sigma, S, k_flow, shear_radius(sigma, S), derivatives);
 }
 
 // F, m, g and their derivatives at (sigma, kappa).
