@@ -175,6 +175,65 @@ inline bool pair_consistent(float high, float low) {
   return (h_bits < kInfinity) & (l_bits < kInfinity) & (l <= next - h);
 }
 
+// A pair is canonical when storing its own value again writes it unchanged:
+// float(v) and pair_low(v, high) are high and low bit for bit, v being
+// pair_value(high, low). The single-precision elastic path (adapter/
+// explicit_block.hpp) leaves the pairs an elastic increment does not change
+// where they are; for a canonical pair that is exactly what rewriting them
+// (store_state_pairs, the full path) would write. Such a pair is finite and
+// pair_consistent when its high part is finite: float(v) = high puts v within
+// half a spacing of high, so low, v - high rounded, is at most one spacing.
+//
+// Nearly every pair store_state_pairs writes is canonical. With x its
+// finite value, h = float(x), r = x - h and l = float(r):
+//  - r is exact in double: |r| <= |x| (0 is a float, h the nearest) and r
+//    is a multiple of x's own spacing, as h is.
+//  - v = h + l is exact: l = r when r has at most 24 bits (then v = x);
+//    otherwise l is a multiple of r's 24-bit spacing, coarser than x's
+//    53-bit one, and |v| is at most about |x|, so v fits in 53 bits.
+//  - float(v) = h: r lies within h's rounding interval, between minus half
+//    the spacing below h and half the spacing above it (both floats, or
+//    below float's least spacing rounding to 0), and rounding r to l is
+//    monotonic, so v lies in it too; strictly inside, v rounds to h, and at
+//    an end that x itself reached (a tie of x) l = r, v = x rounds to h.
+//  - l round-trips: v - h is exact (it is l), and float(l) = l.
+// The exceptions, after which the elastic path rewrites every pair as
+// store_state_pairs does (canonical within two rewrites: (-0, -0) becomes
+// (-0, +0), then (+0, +0)): a tie, r just inside the interval
+// rounding to l = half a spacing, so that v is the midpoint and rounds to the
+// even neighbour, which need not be h (x within 2^-24 of its spacing of a
+// midpoint, about one value in 2^24); a low part -0 (a tiny negative
+// remainder, |x| below about 2^-97), as h + (-0) - h is +0; and h = -0
+// (x = -0), as -0 + 0 is +0. Inline and branch-free: it runs for 11 pairs on
+// every elastic point-update of the single-precision routine.
+inline bool pair_canonical(float high, float low, double value) {
+  const float h = float(value), l = float(value - double(high));
+  std::uint32_t hb, lb, high_b, low_b;
+  std::memcpy(&hb, &h, sizeof hb);
+  std::memcpy(&lb, &l, sizeof lb);
+  std::memcpy(&high_b, &high, sizeof high_b);
+  std::memcpy(&low_b, &low, sizeof low_b);
+  return ((hb ^ high_b) | (lb ^ low_b)) == 0;
+}
+
+// store_state_pairs' rounding of one value, for the paths that store a few
+// pairs inline. The empty asm hides that high is float(value): GCC 12.2 at
+// -O2/-O3 otherwise miscompiles float(value - double(float(value))) when it
+// vectorises two such lanes (below, load_state_pairs), taking the extension
+// of the truncation for value itself and writing a low part 0.
+inline void pair_of(double value, float& high, float& low) {
+  float h = float(value);
+#if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
+  asm("" : "+x"(h));
+#elif defined(__GNUC__) && defined(__aarch64__)
+  asm("" : "+w"(h));
+#elif defined(__GNUC__)
+  asm("" : "+m"(h));
+#endif
+  high = h;
+  low = pair_low(value, h);
+}
+
 // kPairedSlots as runs of consecutive high and low slots, for loops over the
 // pairs that vectorise.
 struct PairRun {
@@ -219,6 +278,55 @@ inline constexpr int kPairCount = kPairedStateCount - kStateCount;
 inline void pair_values(const float* a, double (&v)[kPairCount]) {
   for_each_pair_slot([&](int i, int high, int low) { v[i] = pair_value(a[high], a[low]); });
 }
+
+// The same, and whether every pair is canonical (pair_canonical), as one test
+// without a branch per pair. With GCC or Clang in vectors of four pairs, the
+// runs read whole: the first run's fourth lane (SDV 4 and its neighbour SDV
+// 27, within the pairs' 34 slots) is read and left out.
+#if defined(__GNUC__)
+namespace pair_vectors {
+typedef float F4 __attribute__((vector_size(16)));
+typedef double D4 __attribute__((vector_size(32)));
+typedef std::int32_t I4 __attribute__((vector_size(16)));
+// Four pairs from high slot h and low slot l on: their values, and the lanes
+// (all bits set) that are not canonical.
+inline I4 values(const float* a, int h, int l, D4& v) {
+  F4 high, low;
+  std::memcpy(&high, a + h, sizeof high);
+  std::memcpy(&low, a + l, sizeof low);
+  const D4 high_d = __builtin_convertvector(high, D4);
+  v = high_d + __builtin_convertvector(low, D4);
+  const F4 h2 = __builtin_convertvector(v, F4), l2 = __builtin_convertvector(v - high_d, F4);
+  I4 hb, lb, h2b, l2b;
+  std::memcpy(&hb, &high, sizeof hb);
+  std::memcpy(&lb, &low, sizeof lb);
+  std::memcpy(&h2b, &h2, sizeof h2b);
+  std::memcpy(&l2b, &l2, sizeof l2b);
+  return (hb ^ h2b) | (lb ^ l2b);
+}
+}  // namespace pair_vectors
+inline bool canonical_pair_values(const float* a, double (&v)[kPairCount]) {
+  static_assert(kPairRuns[0].count == 3 && kPairRuns[1].count == 8 && kPairRuns[0].low + 3 == kPairRuns[1].low,
+                "the runs as the vectors read them");
+  namespace pv = pair_vectors;
+  pv::D4 v0, v1, v2;
+  pv::I4 bad = pv::values(a, kPairRuns[0].high, kPairRuns[0].low, v0) & pv::I4{-1, -1, -1, 0};
+  bad |= pv::values(a, kPairRuns[1].high, kPairRuns[1].low, v1);
+  bad |= pv::values(a, kPairRuns[1].high + 4, kPairRuns[1].low + 4, v2);
+  for (int i = 0; i < 3; ++i) v[i] = v0[i];
+  for (int i = 0; i < 4; ++i) v[3 + i] = v1[i], v[7 + i] = v2[i];
+  return (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
+}
+#else
+inline bool canonical_pair_values(const float* a, double (&v)[kPairCount]) {
+  int all = 1;
+  for_each_pair_slot([&](int i, int high, int low) {
+    v[i] = pair_value(a[high], a[low]);
+    all &= pair_canonical(a[high], a[low], v[i]);
+  });
+  return all;
+}
+#endif
 
 // load_state / store_state with the paired variables as float pairs: the
 // array holds at least kPairedStateCount values. The load is inline (the

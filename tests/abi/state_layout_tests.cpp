@@ -7,6 +7,8 @@
 // the low parts in SDV 24-34.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 #include <catch2/catch.hpp>
@@ -67,6 +69,8 @@ struct FullPath {
     stress[2] = Real(-1.0 * r.traction[2]);
   }
 };
+
+bool same_bits(const Real* a, const Real* b, int n) { return std::memcmp(a, b, sizeof(Real) * size_t(n)) == 0; }
 
 void apply(OnePoint& pt, const Inputs& in) {
   pt.penetration = in.penetration;
@@ -186,4 +190,86 @@ TEST_CASE("State array: elastic increments under turning tangents write what the
     CHECK(pt.state[slot::plastic_s1] != Real(0));
     CHECK(pt.state[slot::crack_s2] != Real(0));
   }
+}
+
+TEST_CASE("State array: with float pairs the elastic path leaves unchanged pairs as they are and rewrites the "
+          "pairs when one is not canonical, as the full path does, bit for bit",
+          "[abi][state]") {
+  if (kDouble) return;  // no pairs
+  // After plastic slip and opening, elastic back and forth, dRot the identity
+  // at even calls and turning at odd ones; before every third call one pair
+  // (in turn each of the 11) is replaced, in the routine's array and the
+  // full path's alike, by one that is consistent but not canonical: a low
+  // part with bits below the double sum's reach, a tie (half an odd high
+  // part's spacing), a low part -0, or a -0 high part for a value 0.
+  const mortar::Model model = model_of(m15_props());
+  const int states = mortar::kPairedStateCount;
+  OnePoint pt(m15_props(), states);
+  FullPath full(states);
+  const int n = 400;
+  int differences = 0, elastic = 0, injected = 0, unchanged_kept = 0, unchanged = 0;
+  for (int i = 0; i <= 2 * n; ++i) {
+    Inputs in = inputs(std::min(i, n), n);
+    double angle = 0;
+    if (i > n) {
+      const double back = i % 2 ? 2e-6 : 1e-6, before = i == n + 1 ? 0.0 : (i % 2 ? 1e-6 : 2e-6);
+      in.penetration = Real(double(inputs(n, n).penetration) + back);
+      in.dr_disp[1] = Real(before - back);
+      in.dr_disp[2] = Real(back - before);
+      angle = i % 2 ? 1e-3 * std::sin(0.1 * i) : 0.0;
+    }
+    const Real d_rot[4] = {Real(std::cos(angle)), Real(-std::sin(angle)), Real(std::sin(angle)),
+                           Real(std::cos(angle))};
+    if (i > n && i % 3 == 0) {
+      // Not the damages: a value of 1 moved up leaves the range, and the
+      // routine rejects the state (keeping it) where FullPath stores it.
+      const int kinds[] = {0, 1, 2, 3, 4, 5, 8, 9, 10};
+      const mortar::SlotPair p = mortar::kPairedSlots[kinds[(i / 3) % 9]];
+      float high = pt.state[p.high], low = pt.state[p.low];
+      const float spacing = std::nextafter(std::abs(high), std::numeric_limits<float>::infinity()) - std::abs(high);
+      switch ((i / 33) % 4) {
+        case 0: low = spacing * std::ldexp(1.0f + std::ldexp(1.0f, -23), -20); break;  // sum inexact
+        case 1:  // a tie: an odd high part and half its spacing
+          if (high != 0) {
+            std::uint32_t b;
+            std::memcpy(&b, &high, sizeof b);
+            b |= 1u;
+            std::memcpy(&high, &b, sizeof b);
+          }
+          low = 0.5f * (std::nextafter(std::abs(high), std::numeric_limits<float>::infinity()) - std::abs(high));
+          break;
+        case 2: low = -0.0f; break;
+        default: if (high == 0) high = -0.0f; else low = -0.0f; break;
+      }
+      REQUIRE(mortar::pair_consistent(high, low));
+      if (!mortar::pair_canonical(high, low, mortar::pair_value(high, low))) ++injected;
+      pt.state[p.high] = full.state[p.high] = high;
+      pt.state[p.low] = full.state[p.low] = low;
+    }
+    const std::vector<Real> start = pt.state;
+    apply(pt, in);
+    std::copy(d_rot, d_rot + 4, pt.d_rot);
+    pt.call();
+    full.call(model, in, d_rot);
+    differences += !same_bits(full.state.data(), pt.state.data(), states);
+    differences += !same_bits(full.stress, pt.stress, 3);
+    if (i > n && pt.spd == Real(0)) {
+      ++elastic;
+      // The pairs an elastic increment without a turn does not change.
+      if (angle == 0 && i % 3 != 0) {
+        ++unchanged;
+        bool kept = true;
+        for (const mortar::SlotPair& p : mortar::kPairedSlots) {
+          if (p.high >= slot::separation_n) continue;
+          kept &= same_bits(&start[p.high], &pt.state[p.high], 1) && same_bits(&start[p.low], &pt.state[p.low], 1);
+        }
+        unchanged_kept += kept;
+      }
+    }
+  }
+  CHECK(differences == 0);
+  CHECK(injected > 100);
+  CHECK(elastic == n);
+  CHECK(unchanged > 100);
+  CHECK(unchanged_kept == unchanged);
 }

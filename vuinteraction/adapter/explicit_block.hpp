@@ -240,14 +240,16 @@ struct ExplicitBlock {
     namespace slot = mortar::slot;
     // mortar::state_valid with its finite test on the array (vector loads;
     // the open flag, SDV 15, among the values, is 0 or 1 by flags_valid, and
-    // a float pair is finite when both its parts are, which consistent()
-    // checks).
-    const bool flags = flags_valid(st), pairs = storage.consistent(st), finite = all_finite(st, slot::substeps_accepted);
-    if (!(flags & pairs & finite)) return kNotElastic;
+    // a float pair is finite when both its parts are, which load_elastic()'s
+    // tests of the pairs imply given finite high parts).
     mortar::State s;
-    storage.load(st, s);
+    bool rewrite;
+    const bool flags = flags_valid(st), pairs = storage.load_elastic(st, s, rewrite),
+               finite = all_finite(st, slot::substeps_accepted);
+    if (!(flags & pairs & finite)) return kNotElastic;
     if (!mortar::state_in_range(s)) return kNotElastic;
-    if (counts.n_dir == 3 && !is_identity(d_rot_of(k))) {
+    const bool turned = counts.n_dir == 3 && !is_identity(d_rot_of(k));
+    if (turned) {
       rotate_tangential_state(d_rot_of(k), s);
       // A turn can overflow a finite vector near the range's end; the law
       // then rejects the state (check_state), which the full path reports.
@@ -264,11 +266,9 @@ struct ExplicitBlock {
     if (counts.n_dir == 2) out[2] = Real(0);
     out[3] = Real(r.elastic_energy);
     // In double precision every value is finite already (the state's test
-    // above, elastic_increment's); a float may overflow.
-    if constexpr (StateStorage<Real>::kSingle) {
-      if (!all_finite(out, 4)) return reject_point(k, mortar::Failure::non_finite_result);
-    }
-    if (!storage.store_elastic(s, st)) return reject_point(k, mortar::Failure::non_finite_result);
+    // above, elastic_increment's); a float may overflow, which store_elastic
+    // checks with the state's values.
+    if (!storage.store_elastic(s, turned, rewrite, out, st)) return reject_point(k, mortar::Failure::non_finite_result);
     if (first) {
       st[slot::reference_penetration] = Real(penetration_of(k));
       st[slot::initialised] = Real(1);

@@ -59,32 +59,49 @@ struct StateStorage {
     mortar::load_state(st, s);
   }
 
-  // What store() changes after an elastic increment (mortar::elastic_increment):
-  // the separation (SDV 12-14), the open flag, the counts and status (SDV
-  // 19-21) and the tangential components a rotation turns (SDV 2-3, 5-6); the
-  // value store() would write into any other slot is the one it read (a
-  // finite Real, to double and back). With float pairs everything store()
-  // writes, since it rewrites each pair as the rounding of its value (a pair
-  // it did not write itself may round differently). False, with nothing
-  // written, when a value does not fit in Real (the full path's rejection).
-  bool store_elastic(const mortar::State& s, Real* st) const {
-    namespace slot = mortar::slot;
+  // The elastic path's load (ExplicitBlock::elastic_point): load(), false
+  // when a pair is not consistent() (the full path rejects the state), and
+  // `rewrite` false when every pair is canonical (mortar::pair_canonical:
+  // store() would write it unchanged), so that store_elastic() may leave the
+  // pairs an elastic increment does not change where they are. A canonical
+  // pair with a finite high part (the caller's test) is consistent, so the
+  // pairs are tested one by one only when one is not canonical.
+  bool load_elastic(const Real* st, mortar::State& s, bool& rewrite) const {
+    rewrite = false;
     if constexpr (kSingle) {
       if (pairs) {
-        // Every slot store() writes, through a copy checked before it is
-        // stored: the pairs' rounding stays out of line (mortar::store_state_pairs).
-        float end[mortar::kPairedStateCount];
-        std::copy(st, st + mortar::kPairedStateCount, end);
-        mortar::store_state_pairs(s, end);
-        if (!mortar::all_finite(end, mortar::kPairedStateCount)) return false;
-        std::copy(end, end + mortar::kPairedStateCount, st);
-        return true;
+        mortar::load_state(st, s);
+        double v[mortar::kPairCount];
+        rewrite = !mortar::canonical_pair_values(st, v);
+        int i = 0;
+        mortar::for_each_pair(s, [&](int, int, double& x) { x = v[i++]; });
+        return !rewrite || consistent(st);
       }
     }
+    mortar::load_state(st, s);
+    return true;
+  }
+
+  // What store() changes after an elastic increment (mortar::elastic_increment):
+  // the separation (SDV 12-14), the open flag, the counts and status (SDV
+  // 19-21) and, when dRot turned them (`turned`), the tangential components
+  // (SDV 2-3, 5-6); the value store() would write into any other slot is the
+  // one it read (a finite Real, to double and back; with float pairs, a
+  // canonical pair from load_elastic(), unless `rewrite`, which rewrites
+  // every slot store() writes). False, with nothing written, when a value or
+  // one of the point's `outputs` (stress and sed in Real, computed by the
+  // caller) does not fit in Real (the full path's rejection).
+  bool store_elastic(const mortar::State& s, bool turned, bool rewrite, const Real (&outputs)[4], Real* st) const {
+    namespace slot = mortar::slot;
+    if constexpr (kSingle) {
+      if (pairs && rewrite) return store_all_pairs(s, outputs, st);
+      if (pairs) return store_elastic_pairs(s, turned, outputs, st);
+    }
     const Real v[] = {Real(s.plastic[1]), Real(s.plastic[2]),    Real(s.crack[1]),     Real(s.crack[2]),
-                      Real(s.separation[0]), Real(s.separation[1]), Real(s.separation[2])};
+                      Real(s.separation[0]), Real(s.separation[1]), Real(s.separation[2]), outputs[0],
+                      outputs[1], outputs[2], outputs[3]};
     if constexpr (kSingle) {  // a finite double is itself
-      if (!mortar::all_finite(v, 7)) return false;
+      if (!mortar::all_finite(v, 11)) return false;
     }
     st[slot::plastic_s1] = v[0];
     st[slot::plastic_s2] = v[1];
@@ -103,6 +120,63 @@ struct StateStorage {
   }
 
  private:
+  // store_elastic() with a pair that is not canonical: every slot store()
+  // writes, through a copy checked before it is stored (the pairs' rounding
+  // out of line, mortar::store_state_pairs). Out of line and given a copy
+  // of the state, so that the caller's state, which its common path keeps in
+  // registers, never has its address taken.
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  static bool store_all_pairs(mortar::State s, const float (&outputs)[4], float* st) {
+    float end[mortar::kPairedStateCount];
+    std::copy(st, st + mortar::kPairedStateCount, end);
+    mortar::store_state_pairs(s, end);
+    if (!mortar::all_finite(outputs, 4) || !mortar::all_finite(end, mortar::kPairedStateCount)) return false;
+    std::copy(end, end + mortar::kPairedStateCount, st);
+    return true;
+  }
+
+  // store_elastic() with float pairs: the separation's three pairs and, after
+  // a turn, the tangential plastic pairs and crack components, checked with
+  // the outputs, in one test, before any is stored. The reference
+  // penetration (SDV 22, which a first call replaces only afterwards) is
+  // tested too, as store_all_pairs tests every slot it leaves, so that both
+  // reject the same points.
+  static bool store_elastic_pairs(const mortar::State& s, bool turned, const float (&outputs)[4], float* st) {
+    namespace slot = mortar::slot;
+    namespace low = mortar::low_slot;
+    // The separation's high and low parts, the reference penetration, the
+    // outputs (12 values: whole vectors for the test); after a turn the
+    // plastic pairs and the crack components.
+    float sep[12] = {}, tan[6];
+    for (int i = 0; i < 3; ++i) mortar::pair_of(s.separation[i], sep[i], sep[3 + i]);
+    sep[6] = st[slot::reference_penetration];
+    for (int i = 0; i < 4; ++i) sep[7 + i] = outputs[i];
+    if (!mortar::all_finite(sep, 12)) return false;
+    if (turned) {
+      mortar::pair_of(s.plastic[1], tan[0], tan[2]);
+      mortar::pair_of(s.plastic[2], tan[1], tan[3]);
+      tan[4] = float(s.crack[1]);
+      tan[5] = float(s.crack[2]);
+      if (!mortar::all_finite(tan, 6)) return false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      st[slot::separation_n + i] = sep[i];
+      st[low::separation_n + i] = sep[3 + i];
+    }
+    if (turned) {
+      st[slot::plastic_s1] = tan[0];
+      st[slot::plastic_s2] = tan[1];
+      st[low::plastic_s1] = tan[2];
+      st[low::plastic_s2] = tan[3];
+      st[slot::crack_s1] = tan[4];
+      st[slot::crack_s2] = tan[5];
+    }
+    store_counts(s, st);
+    return true;
+  }
+
   static void store_counts(const mortar::State& s, Real* st) {
     namespace slot = mortar::slot;
     st[slot::open] = Real(s.open ? 1 : 0);
