@@ -69,6 +69,8 @@ IncrementResult failed(const Model& M, State& state, IncrementResult res, Failur
 }
 
 // The increment with one scheme, from a valid state and a finite increment.
+// `state` is written only at the end: the end state on success, else the
+// failure's three slots (failed()), which integrate() relies on.
 IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, SubstepScheme& scheme,
                                IncrementResult& res, TangentTracker& tracker) {
   IntegrationStatus& st = res.status;
@@ -278,12 +280,17 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
 IncrementResult integrate(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut) {
   if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
   if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
-  // The elastic shortcut first: most increments end here, without the copy
-  // of the start state the fallback chain needs.
   if (IncrementResult res; shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
-  const State start = state;
+  // A failed attempt has left the start state as it was but for the three
+  // slots failed() writes: the fallback chain's start is copied only when
+  // the chain runs.
+  const int status = state.status, accepted = state.substeps_accepted, rejected = state.substeps_rejected;
   const IncrementResult first = attempt(M, state, d, tangent, false);
   if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
+  State start = state;
+  start.status = status;
+  start.substeps_accepted = accepted;
+  start.substeps_rejected = rejected;
   return fall_back(M, start, state, d, tangent, first);
 }
 

@@ -17,6 +17,7 @@ void correct_drift(const Model& M, Point& P, SurfaceAt& at, Branches grow) {
   double F = yield_of(P, at);
   for (int it = 0; it < 8; ++it) {
     if (F <= yield_tolerance(M, P.sigma)) return;
+    with_psi(M, at.S, P.y.wIII);
     const RateStiffness k = rate_stiffness(M, P.y, grow.normal, grow.shear);
     const Flow f = flow_of(M, P.sigma, at.S, k.on_flow, at.radius);
     const Vec3 e0 = P.y.elastic_separation();

@@ -40,7 +40,7 @@ inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
   const Parameters& p = M.p;
   const double s = std::max(0.0, 1.0 - y.wI / p.GIC - y.wII / p.GIIC);
   const bool worn = y.wIII > 0;
-  const double t = worn ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * std::exp(-p.m * y.wIII) : M.tan_phi0;
+  const double t = worn ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * exp_or_zero(-p.m * y.wIII) : M.tan_phi0;
   const double C_t = worn ? M.cohesion_term / t : M.cohesion_over_tan_phi0;
   const double alpha = s * 0.5 * (C_t - p.ft0 * t), beta = s * 0.5 * (C_t + p.ft0 * t);
   auto inside = [&](const Vec3& sigma) {

@@ -33,19 +33,20 @@ Rates branch_rates(const Model& M, const Point& P, const Surface& S, const Shear
   const Flow f = flow_of(M, P.sigma, S, k.on_flow, radius);
   const Vec3 k_dd = k.times_separation(dd);
   const double num = f.dF.dot(k_dd);
-  Rates r;
   // Unloading inside the step, or a flow that no stiffness can feed (open
   // and fully damaged along it): secant elasticity.
   if (num <= 0 || !(f.dF.dot(f.k_A_m) > 0)) {
+    Rates r;
     r.dsigma = secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).cwiseProduct(dd);
     if (dp) *dp = Vec3::Zero();
     return r;
   }
   if (snaps_back(f)) {
+    Rates r;
     r.snapback = true;
     return r;
   }
-  r = along_flow(M, P.sigma, f, num / f.denominator);
+  Rates r = along_flow(M, P.sigma, f, num / f.denominator);
   r.dsigma += k_dd;
   r.plastic = true;
   if (dp) *dp = r.dplastic;

@@ -16,7 +16,7 @@ constexpr double kTiny = 1e-300;
 // increments fail on it or at the smallest substep).
 constexpr int kMaxNewtonIterations = 200000;
 
-Attempt step_to(const Point& N) { return Attempt{Attempt::step, &N}; }
+Attempt step_to(Point& N) { return Attempt{Attempt::step, &N}; }
 Attempt retry_with(double size) {
   Attempt a;
   a.kind = Attempt::retry;
@@ -65,7 +65,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
     add(end_, r1, 0.5);
     add(end_, r2, 0.5);
     end_.y.separation += dd;
-    end_surface_ = surface_of(M_, end_.y);
+    end_surface_ = shape_of(M_, end_.y);
     error_ = local_error(r1, r2, end_, end_surface_);
   }
   if (error_ > c.stol && dT > c.min_substep) {
@@ -147,7 +147,10 @@ Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
       return a;
     }
   }
-  if (step_.ok) return step_to(step_.N);
+  if (step_.ok) {
+    end_ = step_.N;
+    return step_to(end_);
+  }
   if (dT > M_.controls.min_substep) return retry_with(halved(M_.controls, dT));
   Attempt a{Attempt::fail};
   a.failure = Failure::local_solve_failed;

@@ -33,9 +33,10 @@ struct SchemeTraits {
 // What one attempted substep came to.
 struct Attempt {
   enum Kind { step, retry, fail, on_boundary } kind = step;
-  const Point* end = nullptr;  // step, on_boundary: the end point before settle() (held by the
-                               // scheme until its next attempt)
-  const Surface* surface = nullptr;  // step: the surface of end's works, when the scheme evaluated it
+  Point* end = nullptr;  // step, on_boundary: the end point before settle(), held by the scheme
+                         // until its next attempt; the substepper settles a step's in place
+  const Surface* surface = nullptr;  // step: the surface of end's works (tan_psi perhaps left to
+                                     // with_psi), when the scheme evaluated it
   double size = 0;             // retry: the substep size to try next
   Failure failure = Failure::none;
   double theta = 0;            // on_boundary: the fraction of the substep done
@@ -120,6 +121,7 @@ class BackwardEuler final : public SubstepScheme {
   IntegrationStatus& st_;
   TangentTracker& tangent_;
   BackwardEulerStep step_;
+  Point end_;  // step_.N, settled in place by the substepper: the tangent reads step_ unsettled
   BoundaryStep boundary_;
   State pre_settle_;
   Vec3 sigma_pre_settle_ = Vec3::Zero();

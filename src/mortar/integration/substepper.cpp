@@ -39,6 +39,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     if (unloaded && yield_of(P, at_) < -yield_tolerance(M, P.sigma)) return T;
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
+    with_psi(M, at_.S, P.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
     const Rates r1 = stage(M, P, at_, dd);
     if (r1.snapback) {  // no strain-driven solution from here
       if (!relax(M, P, st, true)) {
@@ -62,7 +63,8 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
     // settle() and the landings change no work: SN is the surface of the
     // substep's end before and after them.
-    const Surface SN = a.surface ? *a.surface : surface_of(M, a.end->y);
+    SurfaceAt at_Q;
+    const Surface& SN = at_Q.S = a.surface ? *a.surface : surface_of(M, a.end->y);
     const Landing sep = separation(SN, dT);
     if (sep == Landing::cut) continue;
     const Landing normal = normal_completion(*a.end, SN, dT);
@@ -75,7 +77,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     }
     if (crossing_kind == Crossing::cut) continue;
     const bool switch_here = crossing_kind == Crossing::ends_on_boundary;
-    Point Q = *a.end;
+    Point& Q = *a.end;  // the scheme's own, which its next attempt overwrites
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
     scheme.before_settle(Q);
     settle(M, Q, P.y.elastic_separation(), scheme.traits.branches_from_first_stage ? r1.grow : Branches{});
@@ -86,7 +88,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
-    SurfaceAt at_Q{SN, shear_radius(Q.sigma, SN)};
+    at_Q.radius = shear_radius(Q.sigma, SN);
     if (const double retry = scheme.recheck(Q, at_Q, dT, lands); retry > 0) {
       dT = retry;
       ++st.substeps_rejected;

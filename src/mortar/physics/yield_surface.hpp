@@ -9,6 +9,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 #include <Eigen/Core>
@@ -21,6 +22,11 @@ namespace mortar {
 
 using Mat3 = Eigen::Matrix3d;
 
+// exp(x), which is +0 for every x below ln(2^-1075) = -745.1332...: returned
+// directly there, since glibc's exp takes its slow underflow path (errno) to
+// the same +0 (heavy wear, large m or n, Eq. 6). NaN goes to exp as before.
+inline double exp_or_zero(double x) { return x < -745.14 ? 0.0 : std::exp(x); }
+
 // Current size of the surface, from the inelastic works.
 struct Surface {
   double s_raw = 1;   // 1 - wI/GIC - wII/GIIC (may go below 0)
@@ -30,15 +36,19 @@ struct Surface {
   double a = 0, b = 0;    // alpha/s and beta/s for this tan_phi (Eq. 3)
   double da = 0, db = 0;  // their derivatives with respect to tan_phi
   double alpha = 0, beta = 0;
+  bool has_psi = true;  // tan_psi evaluated (shape_of leaves it to with_psi)
 };
 
-inline Surface surface_of(const Model& M, double wI, double wII, double wIII) {
+// The surface without tan_psi, which only the flow (Eq. 10) reads: F (Eq. 2)
+// and the error estimate of a substep's end need no exp(-n wIII); with_psi
+// adds it where a flow is evaluated there.
+inline Surface shape_of(const Model& M, double wI, double wII, double wIII) {
   const Parameters& p = M.p;
   Surface S;
+  S.has_psi = false;
   S.s_raw = 1.0 - wI / p.GIC - wII / p.GIIC;
   S.s = std::max(0.0, S.s_raw);
-  S.tan_phi = M.tan_phir + (M.tan_phi0 - M.tan_phir) * std::exp(-p.m * wIII);
-  S.tan_psi = M.tan_psir + (M.tan_psi0 - M.tan_psir) * std::exp(-p.n * wIII);
+  S.tan_phi = M.tan_phir + (M.tan_phi0 - M.tan_phir) * exp_or_zero(-p.m * wIII);
   // Eq. 3 solved for alpha, beta: beta - alpha = ft*tanphi,
   // beta + alpha = c^2/(ft*tanphi); with ft = s*ft0, c = s*c0 both scale with s.
   const double t = S.tan_phi, C = M.cohesion_term, f = p.ft0;
@@ -50,7 +60,19 @@ inline Surface surface_of(const Model& M, double wI, double wII, double wIII) {
   S.beta = S.s * S.b;
   return S;
 }
+// Eq. 6 with psi, n, for a surface of works with this wIII.
+inline void with_psi(const Model& M, Surface& S, double wIII) {
+  if (S.has_psi) return;
+  S.tan_psi = M.tan_psir + (M.tan_psi0 - M.tan_psir) * exp_or_zero(-M.p.n * wIII);
+  S.has_psi = true;
+}
+inline Surface surface_of(const Model& M, double wI, double wII, double wIII) {
+  Surface S = shape_of(M, wI, wII, wIII);
+  with_psi(M, S, wIII);
+  return S;
+}
 inline Surface surface_of(const Model& M, const State& y) { return surface_of(M, y.wI, y.wII, y.wIII); }
+inline Surface shape_of(const Model& M, const State& y) { return shape_of(M, y.wI, y.wII, y.wIII); }
 
 inline double shear_norm(const Vec3& sigma) { return hypot_of(sigma[1], sigma[2]); }
 
@@ -137,6 +159,7 @@ void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const
 // `radius`: shear_radius(sigma, S), when the caller has it.
 inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow, const ShearRadius& radius,
                     LocalDerivatives* derivatives = nullptr) {
+  assert(S.has_psi);
   const Parameters& p = M.p;
   Flow f;
   FlowEvaluation v;
