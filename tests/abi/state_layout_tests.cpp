@@ -273,3 +273,25 @@ TEST_CASE("State array: with float pairs the elastic path leaves unchanged pairs
   CHECK(unchanged > 100);
   CHECK(unchanged_kept == unchanged);
 }
+
+TEST_CASE("State array: a first call replaces SDV 22 whatever it holds, on the elastic path as on the full path",
+          "[abi][state]") {
+  // Before the first call SDV 22 holds no reference yet (SDV 23 = 0), so its
+  // content is no rule of the state (docs/model.md 3): a NaN or infinity
+  // left there is overwritten with the penetration, in every layout.
+  for (const int states : {mortar::kStateCount, mortar::kPairedStateCount}) {
+    for (const Real garbage : {std::numeric_limits<Real>::quiet_NaN(), std::numeric_limits<Real>::infinity()}) {
+      for (const double slip : {0.0, 0.05}) {  // a first call's slip is no increment: both elastic
+        OnePoint pt(m15_props(), states);
+        pt.state[slot::reference_penetration] = garbage;
+        pt.penetration = Real(1e-4);
+        pt.dr_disp[1] = Real(slip);
+        pt.call();
+        INFO("DEPVAR " << states << ", SDV 22 = " << garbage << ", slip " << slip);
+        CHECK(pt.state[slot::status] == Real(0));
+        CHECK(pt.state[slot::reference_penetration] == Real(1e-4));
+        CHECK(pt.state[slot::initialised] == Real(1));
+      }
+    }
+  }
+}

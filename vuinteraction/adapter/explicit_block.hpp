@@ -257,6 +257,9 @@ struct ExplicitBlock {
       if (!all_finite(turned, 6)) return kNotElastic;
     }
     const bool first = st[slot::initialised] == Real(0);
+    // A first call replaces SDV 22, whatever it holds; the store's finite
+    // test below reads it, so an overflowed one goes the full path.
+    if (first && !std::isfinite(double(st[slot::reference_penetration]))) return kNotElastic;
     mortar::IncrementResult r;
     if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kNotElastic;
     // Fixed counts, so that the checks and copies are a few instructions
