@@ -4,6 +4,8 @@
 
 #include <Eigen/LU>
 
+#include "mortar/physics/norms.hpp"
+
 namespace mortar {
 
 using Mat73 = Eigen::Matrix<double, 7, 3>;
@@ -30,7 +32,8 @@ void settle_sensitivity(const Model& M, const State& pre, const Vec3& sigma, con
   if (pre.open) {
     const Vec3 e = pre.elastic_separation();
     const Mat3 De = D.separation - D.plastic;
-    if (std::hypot(e[1], e[2]) == 0 && De(1, 1) > 0 && post.ds < 1) {
+    const double es = hypot_of(e[1], e[2]);  // as settle() measures the elastic slip
+    if (es == 0 && De(1, 1) > 0 && post.ds < 1) {
       const double raw = 1.0 - D.sigma(1, 1) / (M.p.ks * De(1, 1));
       if (raw >= 1) shear_limit = ShearLimit::zero;
       else if (!(raw < pre.ds)) shear_limit = ShearLimit::step;
@@ -41,7 +44,6 @@ void settle_sensitivity(const Model& M, const State& pre, const Vec3& sigma, con
       if (raw >= 1) D.damage.row(0).setZero();
       else if (!(raw < pre.dn)) D.damage.row(0) = -D.sigma.row(0) / k + (sigma[0] / (k * e[0])) * De.row(0);
     }
-    const double es = std::hypot(e[1], e[2]);
     if (es > 0) {
       const double tau = shear_norm(sigma);
       const double k = M.p.ks * es;
