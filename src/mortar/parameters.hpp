@@ -50,6 +50,20 @@ enum class Scheme : int {
 };
 const char* scheme_name(Scheme s);
 
+// The default substep budget per increment (props(18) = 0 or absent,
+// docs/model.md 9). A fuzzing build (tools/fuzz.sh defines libFuzzer's
+// conventional FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION) runs the same code
+// with 10^3, the fuzz target's cap of an explicit props(18): an input with
+// nProps < 18 could otherwise spend 10^5 substeps, 2 x 10^5 Newton iterations
+// and four times that again in the fallback chain on one point-increment,
+// seconds under the sanitizers, and such inputs set a long run's rate
+// (docs/robustness.md).
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+inline constexpr int kDefaultMaxSubsteps = 1000;
+#else
+inline constexpr int kDefaultMaxSubsteps = 100000;
+#endif
+
 // Integration controls; props(15..19) in the Abaqus adapters, 0 there = default.
 struct Controls {
   Scheme scheme = Scheme::modified_euler;
@@ -57,7 +71,7 @@ struct Controls {
   double ftol = 1e-8;        // yield-surface tolerance, relative to max(|sigma|, ft0)
   double min_substep = 1e-4; // smallest substep, as a fraction of the increment
                              // (implicit: the smallest plastic substep after halvings)
-  int max_substeps = 100000; // substeps (accepted + rejected) and relaxation steps allowed per increment
+  int max_substeps = kDefaultMaxSubsteps; // substeps (accepted + rejected) and relaxation steps allowed per increment
 };
 
 // The first rule a parameter or control breaks; ok() when none.

@@ -22,7 +22,9 @@
 //            tolerance no substep meets (STOL 1e-309) one increment spends
 //            the whole budget, hours at 10^9; below the budget the same code
 //            runs, and the rule [1, 1e9] itself is a unit test
-//            (test_parameters.cpp).
+//            (test_parameters.cpp). With nProps < 18 the law's default
+//            applies, which the libFuzzer build lowers to 10^3 too
+//            (src/mortar/parameters.hpp).
 //   start    one flag byte: incoming stress and sed all 0, or one value each.
 //   calls    1 + (byte % 8) calls. Per call: up to 3 state corruptions (point,
 //            slot, value: garbage a corrupted restart could hold), then per
@@ -30,8 +32,8 @@
 //            nDir drDisp components. The target skips an input's remaining
 //            calls once its points have spent 2 000 substeps (SDV 19 + 20)
 //            in all: tight tolerances legitimately cost up to the budget of
-//            10^5 substeps per point and increment with nProps < 18 (and the
-//            fallback chain four times that), and repeating that teaches
+//            substeps per point and increment (10^3 in the libFuzzer build;
+//            the fallback chain four times that), and repeating that teaches
 //            nothing; such inputs took most of a long run's time
 //            (docs/robustness.md).
 //

@@ -54,7 +54,10 @@ constexpr const char* kName = "FUZZ-JOINT";
 // Substeps (SDV 19 + 20) an input's points may spend before its remaining
 // calls are skipped (fuzz_input.hpp, "calls").
 constexpr double kInputSubstepBudget = 2e3;
-// The largest substep budget per increment (props(18)) an input gets.
+// The largest substep budget per increment (props(18)) an input gets. The
+// libFuzzer build's default budget, for nProps < 18, is the same
+// (FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION, src/mortar/parameters.hpp); the
+// plain build's replay of the seeds keeps the law's 10^5 there.
 constexpr double kFuzzMaxSubsteps = 1e3;
 
 size_t count(long n) { return n > 0 ? size_t(n) : 0; }
