@@ -279,7 +279,8 @@ inline void pair_values(const float* a, double (&v)[kPairCount]) {
   for_each_pair_slot([&](int i, int high, int low) { v[i] = pair_value(a[high], a[low]); });
 }
 
-// The same, and whether every pair is canonical (pair_canonical), as one test
+// The paired members of s from the array's pairs (as load_state_pairs sets
+// them), and whether every pair is canonical (pair_canonical), as one test
 // without a branch per pair. With GCC or Clang in vectors of four pairs, the
 // runs read whole: the first run's fourth lane (SDV 4 and its neighbour SDV
 // 27, within the pairs' 34 slots) is read and left out.
@@ -305,7 +306,7 @@ inline I4 values(const float* a, int h, int l, D4& v) {
   return (hb ^ h2b) | (lb ^ l2b);
 }
 }  // namespace pair_vectors
-inline bool canonical_pair_values(const float* a, double (&v)[kPairCount]) {
+inline bool canonical_pairs_into(const float* a, State& s) {
   static_assert(kPairRuns[0].count == 3 && kPairRuns[1].count == 8 && kPairRuns[0].low + 3 == kPairRuns[1].low,
                 "the runs as the vectors read them");
   namespace pv = pair_vectors;
@@ -313,16 +314,22 @@ inline bool canonical_pair_values(const float* a, double (&v)[kPairCount]) {
   pv::I4 bad = pv::values(a, kPairRuns[0].high, kPairRuns[0].low, v0) & pv::I4{-1, -1, -1, 0};
   bad |= pv::values(a, kPairRuns[1].high, kPairRuns[1].low, v1);
   bad |= pv::values(a, kPairRuns[1].high + 4, kPairRuns[1].low + 4, v2);
-  for (int i = 0; i < 3; ++i) v[i] = v0[i];
-  for (int i = 0; i < 4; ++i) v[3 + i] = v1[i], v[7 + i] = v2[i];
+  // Straight from the lanes into the members (constant indices once
+  // unrolled): through an array in memory, the members' later wider loads
+  // would wait on narrower stores (no store forwarding).
+  int i = 0;
+  for_each_pair(s, [&](int, int, double& x) {
+    x = i < 3 ? v0[i] : i < 7 ? v1[i - 3] : v2[i - 7];
+    ++i;
+  });
   return (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
 }
 #else
-inline bool canonical_pair_values(const float* a, double (&v)[kPairCount]) {
+inline bool canonical_pairs_into(const float* a, State& s) {
   int all = 1;
-  for_each_pair_slot([&](int i, int high, int low) {
-    v[i] = pair_value(a[high], a[low]);
-    all &= pair_canonical(a[high], a[low], v[i]);
+  for_each_pair(s, [&](int high, int low, double& x) {
+    x = pair_value(a[high], a[low]);
+    all &= pair_canonical(a[high], a[low], x);
   });
   return all;
 }

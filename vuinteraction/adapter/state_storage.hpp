@@ -71,10 +71,7 @@ struct StateStorage {
     if constexpr (kSingle) {
       if (pairs) {
         mortar::load_state(st, s);
-        double v[mortar::kPairCount];
-        rewrite = !mortar::canonical_pair_values(st, v);
-        int i = 0;
-        mortar::for_each_pair(s, [&](int, int, double& x) { x = v[i++]; });
+        rewrite = !mortar::canonical_pairs_into(st, s);
         return !rewrite || consistent(st);
       }
     }
@@ -147,13 +144,13 @@ struct StateStorage {
     namespace slot = mortar::slot;
     namespace low = mortar::low_slot;
     // The separation's high and low parts, the reference penetration, the
-    // outputs (12 values: whole vectors for the test); after a turn the
+    // outputs (12 values: three vectors for the test); after a turn the
     // plastic pairs and the crack components.
-    float sep[12] = {}, tan[6];
+    float sep[6], tan[6];
     for (int i = 0; i < 3; ++i) mortar::pair_of(s.separation[i], sep[i], sep[3 + i]);
-    sep[6] = st[slot::reference_penetration];
-    for (int i = 0; i < 4; ++i) sep[7 + i] = outputs[i];
-    if (!mortar::all_finite(sep, 12)) return false;
+    const float tested[12] = {sep[0],     sep[1],     sep[2],     sep[3],     sep[4],     sep[5],
+                              st[slot::reference_penetration], outputs[0], outputs[1], outputs[2], outputs[3], 0};
+    if (!mortar::all_finite_values(tested)) return false;
     if (turned) {
       mortar::pair_of(s.plastic[1], tan[0], tan[2]);
       mortar::pair_of(s.plastic[2], tan[1], tan[3]);
