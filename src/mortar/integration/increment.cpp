@@ -49,11 +49,14 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   at_boundary_ = false;
   const Vec3 K = secant_stiffness(M_, P_.y.dn, P_.y.ds, P_.y.open);
   const Vec3 e0 = P_.y.elastic_separation();
-  const Surface S = surface_of(M_, P_.y);
+  // S is the start surface: at.S, built in place (a copy of a surface just
+  // computed would load it over its pending stores: no store forwarding),
+  // until a relaxation replaces `at` below, after S's last use.
+  SurfaceAt at = surface_at(M_, P_);
+  const Surface& S = at.S;
   auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
   auto tol_at = [&](double a) { return yield_tolerance(M_, K.cwiseProduct(e0 + a * rest)); };
   auto sample = [&](double a) { return RootSample{F_at(a), tol_at(a)}; };
-  SurfaceAt at{S, shear_radius(P_.sigma, S)};
   const double F0 = yield_of(P_, at), tol0 = tol_at(0);
   const Vec3 n = flow_of(M_, P_.sigma, S, rate_stiffness(M_, P_.y).on_flow, at.radius).dF;
   const Vec3 dsig = K.cwiseProduct(rest);

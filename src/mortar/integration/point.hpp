@@ -26,9 +26,13 @@ struct SurfaceAt {
   Surface S;
   ShearRadius radius;
 };
+// The surface is computed into the result rather than copied there: the
+// copy's wide loads would wait on the surface's pending stores (no store
+// forwarding), on every substep.
 inline SurfaceAt surface_at(const Model& M, const Point& P) {
-  const Surface S = surface_of(M, P.y);
-  return {S, shear_radius(P.sigma, S)};
+  SurfaceAt at{surface_of(M, P.y), {}};
+  at.radius = shear_radius(P.sigma, at.S);
+  return at;
 }
 inline double yield_of(const Point& P, const SurfaceAt& at) { return yield_function(P.sigma, at.S, at.radius); }
 inline bool outside_surface(const Model& M, const Point& P) {

@@ -179,7 +179,9 @@ inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const V
 
   f.dF = Vec3(S.tan_phi, e1, e2);
   f.m = Vec3(v.m_n, e1, e2);
-  f.k_A_m = k_flow.cwiseProduct(f.m);
+  // From the scalars rather than from f.m in memory: a vector load over its
+  // pending stores waits for them (no store forwarding).
+  f.k_A_m = Vec3(k_flow[0] * v.m_n, k_flow[1] * e1, k_flow[2] * e2);
 
   // Works per unit lambda (Eqs. 7-9); the inelastic increment includes the
   // crack part in every regime (Eq. 17).
