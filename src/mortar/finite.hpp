@@ -30,8 +30,8 @@ bool all_finite(const Real* a, int n) {
 // all_finite() of twelve floats the caller computes, tested as three vectors
 // built in registers. The same test through an array would store them one by
 // one and load them four at a time, and a load that spans several pending
-// stores waits for them (no store forwarding): a fifth of the single-precision
-// elastic update (adapter/state_storage.hpp).
+// stores waits for them (no store forwarding): about a sixth of the
+// single-precision elastic update (adapter/state_storage.hpp).
 #if defined(__GNUC__)
 inline bool all_finite_values(const float (&v)[12]) {
   typedef float F4 __attribute__((vector_size(16)));

@@ -51,8 +51,9 @@ enum class Scheme : int {
 const char* scheme_name(Scheme s);
 
 // The default substep budget per increment (props(18) = 0 or absent,
-// docs/model.md 9). A fuzzing build (tools/fuzz.sh defines libFuzzer's
-// conventional FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION) runs the same code
+// docs/model.md 9). The libFuzzer build (MJ_FUZZ, tools/fuzz.sh: there
+// cmake/sanitizers.cmake defines libFuzzer's conventional
+// FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION) runs the same code
 // with 10^3, the fuzz target's cap of an explicit props(18): an input with
 // nProps < 18 could otherwise spend 10^5 substeps, 2 x 10^5 Newton iterations
 // and four times that again in the fallback chain on one point-increment,

@@ -311,3 +311,61 @@ TEST_CASE("State pairs: rounding to pairs keeps a state on the surface within FT
     CHECK(plain > 1);  // why the pairs: plain floats put the start state off the surface
   }
 }
+
+TEST_CASE("State pairs: canonical_pairs_into sets each paired member as load_state_pairs does and tells canonical "
+          "arrays from the others",
+          "[state][pairs]") {
+  // The vectorised load of the elastic path against its scalar definition:
+  // every member from its own pair (pair_value), and the verdict the and of
+  // pair_canonical over the 11 pairs, on stored states and on arrays with
+  // one pair made non-canonical.
+  std::mt19937_64 rng(47);
+  std::uniform_real_distribution<double> value(-2.0, 2.0);
+  long canonical = 0, not_canonical = 0;
+  for (int n = 0; n < 20000; ++n) {
+    State s;
+    for_each_pair(s, [&](int, int, double& x) { x = value(rng) * std::ldexp(1.0, int(rng() % 40) - 30); });
+    float a[kPairedStateCount] = {};
+    store_state_pairs(s, a);
+    if (n % 2 == 1) {  // one pair made non-canonical: a low part -0, or a whole spacing
+      const SlotPair p = kPairedSlots[rng() % kPairCount];
+      const float high = a[p.high];
+      a[p.low] = n % 4 == 1 ? -0.0f : std::nextafter(high, 2 * high + 1) - high;
+    }
+    State expected, got;
+    load_state_pairs(a, expected);
+    bool all = true;
+    for (const SlotPair& p : kPairedSlots) all = all && pair_canonical(a[p.high], a[p.low], pair_value(a[p.high], a[p.low]));
+    const bool verdict = canonical_pairs_into(a, got);
+    CHECK(verdict == all);
+    (all ? canonical : not_canonical) += 1;
+    int mismatched = 0;
+    for_each_pair(got, [&](int high, int, double& x) {
+      double want = 0;
+      for_each_pair(expected, [&](int h, int, double& y) { if (h == high) want = y; });
+      mismatched += std::memcmp(&x, &want, sizeof x) != 0;
+    });
+    CHECK(mismatched == 0);
+  }
+  std::printf("canonical arrays: %ld, not canonical: %ld\n", canonical, not_canonical);
+  CHECK(canonical > 5000);
+  CHECK(not_canonical > 5000);
+}
+
+TEST_CASE("Finite test: all_finite_values finds a non-finite value in any of its twelve places", "[finite]") {
+  const float bad[] = {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity(),
+                       std::numeric_limits<float>::quiet_NaN()};
+  float v[12];
+  for (int i = 0; i < 12; ++i) v[i] = float(i) - 5.5f;
+  v[3] = -0.0f;
+  v[7] = std::numeric_limits<float>::max();
+  v[9] = std::numeric_limits<float>::denorm_min();
+  CHECK(all_finite_values(v));
+  for (int i = 0; i < 12; ++i)
+    for (float b : bad) {
+      float w[12];
+      std::copy(v, v + 12, w);
+      w[i] = b;
+      CHECK_FALSE(all_finite_values(w));
+    }
+}
