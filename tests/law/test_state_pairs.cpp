@@ -334,18 +334,19 @@ TEST_CASE("State pairs: canonical_pairs_into sets each paired member as load_sta
     }
     State expected, got;
     load_state_pairs(a, expected);
-    bool all = true;
-    for (const SlotPair& p : kPairedSlots) all = all && pair_canonical(a[p.high], a[p.low], pair_value(a[p.high], a[p.low]));
     const bool verdict = canonical_pairs_into(a, got);
+    // Both states' paired members in kPairedSlots' order (for_each_pair's).
+    double want[kPairCount], have[kPairCount];
+    int i = 0;
+    for_each_pair(expected, [&](int, int, double& x) { want[i++] = x; });
+    i = 0;
+    for_each_pair(got, [&](int, int, double& x) { have[i++] = x; });
+    bool all = true;
+    for (int k = 0; k < kPairCount; ++k)
+      all = all && pair_canonical(a[kPairedSlots[k].high], a[kPairedSlots[k].low], want[k]);
     CHECK(verdict == all);
     (all ? canonical : not_canonical) += 1;
-    int mismatched = 0;
-    for_each_pair(got, [&](int high, int, double& x) {
-      double want = 0;
-      for_each_pair(expected, [&](int h, int, double& y) { if (h == high) want = y; });
-      mismatched += std::memcmp(&x, &want, sizeof x) != 0;
-    });
-    CHECK(mismatched == 0);
+    CHECK(std::memcmp(want, have, sizeof want) == 0);
   }
   std::printf("canonical arrays: %ld, not canonical: %ld\n", canonical, not_canonical);
   CHECK(canonical > 5000);
