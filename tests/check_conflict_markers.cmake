@@ -1,0 +1,28 @@
+# Fails when a tracked text file of the source tree still holds a merge's
+# conflict markers (a line opening with seven '<' or '>' and a space): a half-
+# resolved merge would otherwise land as documentation or code nobody can read.
+# Run as: cmake -DROOT=<source dir> -P check_conflict_markers.cmake
+set(patterns *.md *.hpp *.cpp *.h *.f *.F *.cmake *.txt *.sh *.toml *.csv *.py)
+set(files "")
+foreach(dir docs src vuinteraction harness tests tools examples calibration_data cmake .ci)
+  foreach(p ${patterns})
+    file(GLOB_RECURSE found ${ROOT}/${dir}/${p})
+    list(APPEND files ${found})
+  endforeach()
+endforeach()
+file(GLOB top ${ROOT}/*.md ${ROOT}/CMakeLists.txt)
+list(APPEND files ${top})
+list(REMOVE_DUPLICATES files)
+set(bad "")
+foreach(f ${files})
+  file(STRINGS ${f} hits REGEX "^(<<<<<<<|>>>>>>>) ")
+  if(hits)
+    list(APPEND bad ${f})
+  endif()
+endforeach()
+list(LENGTH files n)
+if(bad)
+  string(REPLACE ";" "\n  " bad "${bad}")
+  message(FATAL_ERROR "merge conflict markers (a line opening with '<<<<<<< ' or '>>>>>>> ') in:\n  ${bad}")
+endif()
+message(STATUS "${n} files, no merge conflict markers")
