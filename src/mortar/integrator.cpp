@@ -44,8 +44,8 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d)
 namespace {
 
 // The failed increment: the start state is kept, with the failure in SDV 21
-// (docs/model.md 9).
-IncrementResult failed(const Model& M, State& state, IncrementResult res, Failure f, Mat3* tangent) {
+// (docs/model.md 9); `res` holds the failure and the start traction.
+void fail(const Model& M, State& state, IncrementResult& res, Failure f, Mat3* tangent) {
   IntegrationStatus& st = res.status;
   st.failure = f;
   state.status = static_cast<int>(f);
@@ -65,13 +65,15 @@ IncrementResult failed(const Model& M, State& state, IncrementResult res, Failur
                      : Mat3(Vec3(M.p.kn, M.p.ks, M.p.ks).asDiagonal());
     st.tangent_approximate = true;
   }
-  return res;
 }
 
-// The increment with one scheme, from a valid state and a finite increment.
+// The increment with one scheme, from a valid state and a finite increment,
+// into `res` (the caller's result object itself, so that the result is
+// written once, where the adapter reads it: a copy of a struct just filled
+// field by field would wait on those stores).
 // `state` is written only at the end: the end state on success, else the
-// failure's three slots (failed()), which integrate() relies on.
-IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, SubstepScheme& scheme,
+// failure's three slots (fail()), which integrate() relies on.
+void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, SubstepScheme& scheme,
                                IncrementResult& res, TangentTracker& tracker) {
   IntegrationStatus& st = res.status;
   Point P{state, traction_of(M, state)};
@@ -79,7 +81,7 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   if (tangent && scheme.traits.consistent_tangent) tracker.D = &sensitivity;
   const Vec3 sep_end = state.separation + d;
   IncrementIntegration increment(M, P, st, tracker, scheme);
-  if (const Failure f = increment.run(d); f != Failure::none) return failed(M, state, res, f, tangent);
+  if (const Failure f = increment.run(d); f != Failure::none) return fail(M, state, res, f, tangent);
   // The pieces add up to d up to round-off; land exactly on the end point.
   if (P.y.separation != sep_end) {
     P.y.separation = sep_end;
@@ -90,7 +92,7 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   // longer affects the strength there, and check_state() requires w_II >= 0.
   if (P.y.wII < 0) P.y.wII = 0;
   if (check_state(P.y) != nullptr || !P.sigma.allFinite())
-    return failed(M, state, res, Failure::non_finite_result, tangent);
+    return fail(M, state, res, Failure::non_finite_result, tangent);
   // Finite separations can still give an elastic energy or a dissipation
   // increment beyond double's range (increments near 1e155 mm).
   const double energy_end = elastic_energy(M, P.y);
@@ -98,7 +100,7 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   const double d_damage = P.y.dissipation_damage - state.dissipation_damage;
   const double d_unilateral = P.y.energy_unilateral - state.energy_unilateral;
   if (!std::isfinite(energy_end) || !std::isfinite(d_plastic + d_damage + d_unilateral))
-    return failed(M, state, res, Failure::non_finite_result, tangent);
+    return fail(M, state, res, Failure::non_finite_result, tangent);
 
   if (tangent) {
     if (tracker) {
@@ -109,7 +111,7 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
                                            : Mat3(secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).asDiagonal());
       st.tangent_approximate = increment.ended_plastic();
     }
-    if (!tangent->allFinite()) return failed(M, state, res, Failure::non_finite_result, tangent);
+    if (!tangent->allFinite()) return fail(M, state, res, Failure::non_finite_result, tangent);
   }
   res.d_dissipation_plastic = d_plastic;
   res.d_dissipation_damage = d_damage;
@@ -120,17 +122,16 @@ IncrementResult integrate_with(const Model& M, State& state, const Vec3& d, Mat3
   state = P.y;
   res.traction = P.sigma;
   res.elastic_energy = energy_end;
-  return res;
 }
 
 // One attempt at the increment with the scheme of M.controls, from a valid
-// state and a finite increment.
+// state and a finite increment, into `res` (a default result: the counts
+// start at 0).
 // With `shortcut`, an increment elastic_increment() proves elastic is booked
 // without the machinery (the explicit routines ask for no tangent; most of
 // their increments, and the fallback chain's pieces, are elastic).
-IncrementResult attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut = true) {
-  IncrementResult res;
-  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
+void attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, IncrementResult& res, bool shortcut = true) {
+  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return;
   TangentTracker tracker;
   // The scheme is chosen once per increment; each lives on the stack.
   switch (M.controls.scheme) {
@@ -230,7 +231,8 @@ IncrementResult run_pieces(Model R, const State& start, State& end, const Vec3& 
     // Piece i ends where the fraction i/pieces of d does, so that no
     // round-off accumulates; the last ends exactly at start + d.
     const Vec3 target = start.separation + (i == pieces ? d : Vec3((double(i) / pieces) * d));
-    const IncrementResult r = attempt(R, end, target - end.separation, i == pieces ? tangent : nullptr);
+    IncrementResult r;
+    attempt(R, end, target - end.separation, i == pieces ? tangent : nullptr, r);
     add_counts(total.status, r.status);
     budget -= r.status.work();
     if (!r.status.ok()) return total;
@@ -278,20 +280,30 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
 
 // integrate_increment, with or without the elastic shortcut.
 IncrementResult integrate(const Model& M, State& state, const Vec3& d, Mat3* tangent, bool shortcut) {
-  if (check_state(state)) return failed(M, state, IncrementResult{}, Failure::invalid_state, tangent);
-  if (!d.allFinite()) return failed(M, state, IncrementResult{}, Failure::non_finite_increment, tangent);
-  if (IncrementResult res; shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
+  // One result object, returned from every path (no copy of it: see
+  // integrate_with).
+  IncrementResult res;
+  if (check_state(state)) {
+    fail(M, state, res, Failure::invalid_state, tangent);
+    return res;
+  }
+  if (!d.allFinite()) {
+    fail(M, state, res, Failure::non_finite_increment, tangent);
+    return res;
+  }
+  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
   // A failed attempt has left the start state as it was but for the three
-  // slots failed() writes: the fallback chain's start is copied only when
+  // slots fail() writes: the fallback chain's start is copied only when
   // the chain runs.
   const int status = state.status, accepted = state.substeps_accepted, rejected = state.substeps_rejected;
-  const IncrementResult first = attempt(M, state, d, tangent, false);
-  if (first.status.ok() || !can_fall_back(first.status.failure)) return first;
+  attempt(M, state, d, tangent, res, false);
+  if (res.status.ok() || !can_fall_back(res.status.failure)) return res;
   State start = state;
   start.status = status;
   start.substeps_accepted = accepted;
   start.substeps_rejected = rejected;
-  return fall_back(M, start, state, d, tangent, first);
+  res = fall_back(M, start, state, d, tangent, res);
+  return res;
 }
 
 }  // namespace

@@ -159,7 +159,9 @@ TEST_CASE("State array: elastic increments under turning tangents write what the
   // path unloads and reloads elastically while dRot turns the tangents a
   // little at every call: the routine's elastic path must store exactly what
   // loading, turning, integrating and storing the whole state gives, in both
-  // layouts of this precision.
+  // layouts of this precision. The first unloading increment follows a
+  // plastic one (SDV 19 > 0), which sends it down the routine's full path;
+  // the rest take the elastic path.
   const mortar::Model model = model_of(m15_props());
   for (const int states : {mortar::kStateCount, mortar::kPairedStateCount}) {
     OnePoint pt(m15_props(), states);
