@@ -284,6 +284,27 @@ struct ExplicitBlock {
     return 0;
   }
 
+  // integrate_point's store in double precision: the law's end state,
+  // traction and energies are finite (integrate_increment's promise, which
+  // integrate_with checks), the sum of the energy increments is the one it
+  // checked, and SDV 22 was finite or the increment was rejected: everything
+  // goes straight into the caller's arrays, without the staging and the
+  // finite tests a float needs.
+  int store_double(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
+                   const mortar::IncrementResult& r, bool first) const {
+    namespace slot = mortar::slot;
+    storage.store(s, st);
+    if (first) {
+      st[slot::reference_penetration] = Real(penetration_of(k));
+      st[slot::initialised] = Real(1);
+    }
+    Real stress_end[3];
+    abaqus_stress(setup, r.traction, stress_end);
+    std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
+    write_energies(k, r.elastic_energy, r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    return 0;
+  }
+
   // Integrates point k and writes its outputs. Returns the law's Failure code.
   int integrate_point(const Setup& setup, const StateStorage<Real>& storage, int k) const {
     namespace slot = mortar::slot;
@@ -309,6 +330,7 @@ struct ExplicitBlock {
     // declined a state the law rejects before it).
     const mortar::IncrementResult r = mortar::integrate_declined_increment(setup.model, s, d);
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
+    if constexpr (!StateStorage<Real>::kSingle) return store_double(setup, storage, k, st, s, r, first);
     // The law's result in this routine's precision: a double beyond a float's
     // range would come back as infinity. Checked before anything is stored.
     // Either count as a constant, so that the copies below are inlined rather

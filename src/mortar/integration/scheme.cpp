@@ -67,7 +67,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
     add(end_, r1, 0.5);
     add(end_, r2, 0.5);
     end_.y.separation += dd;
-    end_surface_ = shape_of(M_, end_.y);
+    shape_into(M_, end_.y.wI, end_.y.wII, end_.y.wIII, end_surface_);
     error_ = local_error(r1, r2, end_, end_surface_);
   }
   if (error_ > c.stol && dT > c.min_substep) {

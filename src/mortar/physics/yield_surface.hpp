@@ -42,10 +42,14 @@ struct Surface {
 // The surface without tan_psi, which only the flow (Eq. 10) reads: F (Eq. 2)
 // and the error estimate of a substep's end need no exp(-n wIII); with_psi
 // adds it where a flow is evaluated there.
-inline Surface shape_of(const Model& M, double wI, double wII, double wIII) {
+//
+// shape_into writes every member of an existing surface in place: a surface
+// returned by value and assigned to one would be copied with wide loads just
+// after its members' stores, which wait for them (no store forwarding).
+inline void shape_into(const Model& M, double wI, double wII, double wIII, Surface& S) {
   const Parameters& p = M.p;
-  Surface S;
   S.has_psi = false;
+  S.tan_psi = 0;
   S.s_raw = 1.0 - wI / p.GIC - wII / p.GIIC;
   S.s = std::max(0.0, S.s_raw);
   S.tan_phi = M.tan_phir + (M.tan_phi0 - M.tan_phir) * exp_or_zero(-p.m * wIII);
@@ -58,6 +62,10 @@ inline Surface shape_of(const Model& M, double wI, double wII, double wIII) {
   S.db = 0.5 * (-C / (t * t) + f);
   S.alpha = S.s * S.a;
   S.beta = S.s * S.b;
+}
+inline Surface shape_of(const Model& M, double wI, double wII, double wIII) {
+  Surface S;
+  shape_into(M, wI, wII, wIII, S);
   return S;
 }
 // Eq. 6 with psi, n, for a surface of works with this wIII.
