@@ -74,7 +74,7 @@ void fail(const Model& M, State& state, IncrementResult& res, Failure f, Mat3* t
 // `state` is written only at the end: the end state on success, else the
 // failure's three slots (fail()), which integrate() relies on.
 void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, SubstepScheme& scheme,
-                               IncrementResult& res, TangentTracker& tracker) {
+                    IncrementResult& res, TangentTracker& tracker) {
   IntegrationStatus& st = res.status;
   Point P{state, traction_of(M, state)};
   Sensitivity sensitivity;

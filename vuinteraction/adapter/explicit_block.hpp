@@ -272,36 +272,65 @@ struct ExplicitBlock {
     // above, elastic_increment's); a float may overflow, which store_elastic
     // checks with the state's values.
     if (!storage.store_elastic(s, turned, rewrite, out, st)) return reject_point(k, mortar::Failure::non_finite_result);
-    if (first) {
-      st[slot::reference_penetration] = Real(penetration_of(k));
-      st[slot::initialised] = Real(1);
-    }
+    if (first) mark_initialised(k, st);
+    write_stress(k, out);
+    write_energies(k, double(out[3]), 0.0);  // spd: no dissipation
+    return 0;
+  }
+
+  // A first call's reference (SDV 22, 23), into the state array `st` or a
+  // copy of it.
+  void mark_initialised(int k, Real* st) const {
+    st[mortar::slot::reference_penetration] = Real(penetration_of(k));
+    st[mortar::slot::initialised] = Real(1);
+  }
+
+  // Point k's stress, component by component: a copy of n_dir values would
+  // be a call of memmove.
+  void write_stress(int k, const Real* out) const {
     Real* stress_k = stress_of(k);
     stress_k[0] = out[0];
     stress_k[1] = out[1];
     if (counts.n_dir == 3) stress_k[2] = out[2];
-    write_energies(k, double(out[3]), 0.0);  // spd: no dissipation
-    return 0;
   }
 
   // integrate_point's store in double precision: the law's end state,
   // traction and energies are finite (integrate_increment's promise, which
   // integrate_with checks), the sum of the energy increments is the one it
   // checked, and SDV 22 was finite or the increment was rejected: everything
-  // goes straight into the caller's arrays, without the staging and the
-  // finite tests a float needs.
+  // goes straight into the caller's arrays.
   int store_double(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
                    const mortar::IncrementResult& r, bool first) const {
-    namespace slot = mortar::slot;
     storage.store(s, st);
-    if (first) {
-      st[slot::reference_penetration] = Real(penetration_of(k));
-      st[slot::initialised] = Real(1);
-    }
+    if (first) mark_initialised(k, st);
     Real stress_end[3];
     abaqus_stress(setup, r.traction, stress_end);
-    std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
+    write_stress(k, stress_end);
     write_energies(k, r.elastic_energy, r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    return 0;
+  }
+
+  // integrate_point's store in single precision: the law's result as floats,
+  // a double beyond a float's range coming back as infinity, checked before
+  // anything is stored (the state staged in a copy). Either count as a
+  // constant, so that the copies are inlined rather than calls of memcpy.
+  int store_float(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
+                  const mortar::IncrementResult& r, bool first) const {
+    const int count = storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
+    Real end[mortar::kPairedStateCount];
+    std::copy(st, st + count, end);
+    storage.store(s, end);
+    if (first) mark_initialised(k, end);
+    Real stress_end[3];
+    abaqus_stress(setup, r.traction, stress_end);
+    const Real sed_end = Real(r.elastic_energy);
+    const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    const Real energies[2] = {sed_end, spd_end};
+    if (!all_finite(end, count) || !all_finite(stress_end, counts.n_dir) || !all_finite(energies, 2))
+      return reject_point(k, mortar::Failure::non_finite_result);
+    std::copy(end, end + count, st);
+    write_stress(k, stress_end);
+    write_energies(k, double(sed_end), double(spd_end));
     return 0;
   }
 
@@ -327,33 +356,15 @@ struct ExplicitBlock {
     const bool first = st[slot::initialised] == Real(0);
     const mortar::Vec3 d = separation_increment(k, st, s);
     // elastic_point has tried the shortcut on this state and increment (or
-    // declined a state the law rejects before it).
+    // declined a state the law rejects before it), or the point was plastic
+    // and the shortcut is not worth a try: the law does not try it again.
     const mortar::IncrementResult r = mortar::integrate_declined_increment(setup.model, s, d);
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
-    if constexpr (!StateStorage<Real>::kSingle) return store_double(setup, storage, k, st, s, r, first);
-    // The law's result in this routine's precision: a double beyond a float's
-    // range would come back as infinity. Checked before anything is stored.
-    // Either count as a constant, so that the copies below are inlined rather
-    // than calls of memcpy.
-    const int count = StateStorage<Real>::kSingle && storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
-    Real end[mortar::kPairedStateCount];
-    std::copy(st, st + count, end);
-    storage.store(s, end);
-    if (first) {
-      end[slot::reference_penetration] = Real(penetration_of(k));
-      end[slot::initialised] = Real(1);
+    if constexpr (StateStorage<Real>::kSingle) {
+      return store_float(setup, storage, k, st, s, r, first);
+    } else {
+      return store_double(setup, storage, k, st, s, r, first);
     }
-    Real stress_end[3];
-    abaqus_stress(setup, r.traction, stress_end);
-    const Real sed_end = Real(r.elastic_energy);
-    const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
-    const Real energies[2] = {sed_end, spd_end};
-    if (!all_finite(end, count) || !all_finite(stress_end, counts.n_dir) || !all_finite(energies, 2))
-      return reject_point(k, mortar::Failure::non_finite_result);
-    std::copy(end, end + count, st);
-    std::copy(stress_end, stress_end + counts.n_dir, stress_of(k));
-    write_energies(k, double(sed_end), double(spd_end));
-    return 0;
   }
 };
 
