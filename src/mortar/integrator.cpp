@@ -94,7 +94,9 @@ void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, 
   if (check_state(P.y) != nullptr || !P.sigma.allFinite())
     return fail(M, state, res, Failure::non_finite_result, tangent);
   // Finite separations can still give an elastic energy or a dissipation
-  // increment beyond double's range (increments near 1e155 mm).
+  // increment beyond double's range (increments near 1e155 mm). The sum is
+  // IncrementResult::d_inelastic()'s, in its order: the double adapter stores
+  // it unchecked.
   const double energy_end = elastic_energy(M, P.y);
   const double d_plastic = P.y.dissipation_plastic - state.dissipation_plastic;
   const double d_damage = P.y.dissipation_damage - state.dissipation_damage;

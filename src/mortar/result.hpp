@@ -44,6 +44,10 @@ struct IncrementResult {
   double d_dissipation_damage = 0;
   double d_energy_unilateral = 0;
   IntegrationStatus status;
+
+  // Every inelastic energy increment of the law (the adapters' spd), summed
+  // in the order integrate_increment checks finite.
+  double d_inelastic() const { return d_dissipation_plastic + d_dissipation_damage + d_energy_unilateral; }
 };
 
 }  // namespace mortar

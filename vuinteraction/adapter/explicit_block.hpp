@@ -296,8 +296,8 @@ struct ExplicitBlock {
 
   // integrate_point's store in double precision: the law's end state,
   // traction and energies are finite (integrate_increment's promise, which
-  // integrate_with checks), the sum of the energy increments is the one it
-  // checked, and SDV 22 was finite or the increment was rejected: everything
+  // integrate_with checks, d_inelastic() included), and SDV 22 was finite or
+  // the increment was rejected: everything
   // goes straight into the caller's arrays.
   int store_double(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
                    const mortar::IncrementResult& r, bool first) const {
@@ -306,7 +306,7 @@ struct ExplicitBlock {
     Real stress_end[3];
     abaqus_stress(setup, r.traction, stress_end);
     write_stress(k, stress_end);
-    write_energies(k, r.elastic_energy, r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    write_energies(k, r.elastic_energy, r.d_inelastic());
     return 0;
   }
 
@@ -324,7 +324,7 @@ struct ExplicitBlock {
     Real stress_end[3];
     abaqus_stress(setup, r.traction, stress_end);
     const Real sed_end = Real(r.elastic_energy);
-    const Real spd_end = Real(r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral);
+    const Real spd_end = Real(r.d_inelastic());
     const Real energies[2] = {sed_end, spd_end};
     if (!all_finite(end, count) || !all_finite(stress_end, counts.n_dir) || !all_finite(energies, 2))
       return reject_point(k, mortar::Failure::non_finite_result);

@@ -185,7 +185,7 @@ struct StandardPoint {
     mortar::store_state(s, st);
     write_stress(setup, r.traction, T);
     *sed = r.elastic_energy;
-    *spd = r.d_dissipation_plastic + r.d_dissipation_damage + r.d_energy_unilateral;
+    *spd = r.d_inelastic();
     if (!r.status.ok()) {
       // The start state is kept (with the code in SDV 21); Abaqus abandons
       // the increment and retries with PNEWDT times the time increment.
