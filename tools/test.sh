@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything and runs the whole test suite (the README's test command):
 #   1. the normal build (build/): every test;
-#   2. AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/): every test;
+#   2. AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/): every test
+#      of the law and the ABI adapters (tools/sanitize.sh address-all: all);
 #   3. ThreadSanitizer (build-tsan/): the concurrency tests of the ABI adapters;
 #   4. libFuzzer (build-fuzz/): vuinteraction_ for 60 s from the seed corpus.
 # Stages 2-4 are tools/sanitize.sh and tools/fuzz.sh (docs/robustness.md);
@@ -34,7 +35,7 @@ normal() {
 }
 stage "normal build and tests" normal.log normal
 if [ "${MJ_TEST_QUICK:-0}" != 1 ]; then
-  stage "ASan + UBSan build and tests" asan.log bash tools/sanitize.sh address
+  stage "ASan + UBSan build and tests (law, adapters)" asan.log bash tools/sanitize.sh address
   stage "TSan build and concurrency tests" tsan.log bash tools/sanitize.sh thread
   stage "fuzz vuinteraction_ for 60 s" fuzz.log bash tools/fuzz.sh 60
 fi

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
+#include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
 #include "solvers/explicit_run.hpp"
@@ -119,22 +121,32 @@ void keep_first_amplitude(std::vector<std::vector<Vec3>>& legs) {
   }
 }
 
-void add_calibration_paths(const std::string& data_dir, bool quick, std::vector<BenchPath>& paths) {
+// A bench path by its id, built only when chosen: most paths are the
+// history of a mixed-control run, which takes seconds (minutes under the
+// sanitizers), so a study of one path builds that path alone.
+struct PathEntry {
+  std::string id;
+  std::function<BenchPath()> build;
+};
+
+void add_calibration_paths(const std::string& data_dir, bool quick, std::vector<PathEntry>& paths) {
   for (const SeriesSpec& series : read_calibration_data(data_dir, {})) {
     if (quick && series.kind == SeriesKind::cyclic_shear) continue;
     for (const CaseSpec& c : series.cases) {
-      BenchPath b;
-      b.id = c.name;
-      const Protocol protocol = read_protocol_file(c.protocol_file);
-      b.title = protocol.title.empty() ? c.name : protocol.title;
-      b.parameters = read_parameter_file(c.params_file).values;
-      b.directions = protocol.directions;
-      b.legs = history_of_run(b.parameters, protocol, series.scheme, series.stol);
-      if (series.kind == SeriesKind::cyclic_shear) {
-        keep_first_amplitude(b.legs);
-        b.title += " (to the end of the first amplitude's cycles)";
-      }
-      paths.push_back(std::move(b));
+      paths.push_back({c.name, [series, c] {
+                         BenchPath b;
+                         b.id = c.name;
+                         const Protocol protocol = read_protocol_file(c.protocol_file);
+                         b.title = protocol.title.empty() ? c.name : protocol.title;
+                         b.parameters = read_parameter_file(c.params_file).values;
+                         b.directions = protocol.directions;
+                         b.legs = history_of_run(b.parameters, protocol, series.scheme, series.stol);
+                         if (series.kind == SeriesKind::cyclic_shear) {
+                           keep_first_amplitude(b.legs);
+                           b.title += " (to the end of the first amplitude's cycles)";
+                         }
+                         return b;
+                       }});
     }
   }
 }
@@ -180,41 +192,44 @@ std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
   return straight_legs(corners);
 }
 
-void add_mixed_paths(const std::string& data_dir, std::vector<BenchPath>& paths) {
+void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths) {
   const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
+  auto corners = [&p](const char* id, const char* title, std::vector<std::vector<Vec3>> legs) {
+    return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs}; }};
+  };
   // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
   // tangential directions while open, closing into compression, then shear
   // reversed under compression: every regime switch of the law in one path.
-  paths.push_back({"open_shear_close", "opening, shear (s1, s2) while open, closing, reversed shear closed", p, 3,
-                   straight_legs({{0.004, 0, 0}, {0.004, 0.02, 0.01}, {-0.004, 0.02, 0.01}, {-0.004, -0.02, 0.01}})});
-  {
-    BenchPath b;
-    b.id = "cyclic_three_sigma_n";
-    const Protocol protocol = cyclic_at_three_normal_stresses();
-    b.title = protocol.title;
-    b.parameters = p;
-    b.legs = history_of_run(p, protocol, Scheme::modified_euler, 1e-8);
-    paths.push_back(std::move(b));
-  }
+  paths.push_back(corners("open_shear_close", "opening, shear (s1, s2) while open, closing, reversed shear closed",
+                          straight_legs({{0.004, 0, 0}, {0.004, 0.02, 0.01}, {-0.004, 0.02, 0.01}, {-0.004, -0.02, 0.01}})));
+  paths.push_back({"cyclic_three_sigma_n", [p] {
+                     BenchPath b;
+                     b.id = "cyclic_three_sigma_n";
+                     const Protocol protocol = cyclic_at_three_normal_stresses();
+                     b.title = protocol.title;
+                     b.parameters = p;
+                     b.legs = history_of_run(p, protocol, Scheme::modified_euler, 1e-8);
+                     return b;
+                   }});
   // Zig-zag slip while opening past ft0/kn: the traction path crosses
   // tau = 0 on the tension cap, so large increments jump from one side of
   // the apex of the hyperbola to the other.
-  paths.push_back({"apex_jumps", "opening with the slip zig-zagging through zero: jumps across the apex", p, 3,
-                   straight_legs({{0.0025, 0.002, 0}, {0.006, -0.002, 0}, {0.010, 0.003, 0}, {0.020, -0.003, 0}})});
+  paths.push_back(corners("apex_jumps", "opening with the slip zig-zagging through zero: jumps across the apex",
+                          straight_legs({{0.0025, 0.002, 0}, {0.006, -0.002, 0}, {0.010, 0.003, 0}, {0.020, -0.003, 0}})));
   // Opening to separation (wI -> GIC: s = 0, the surface a cone through the
   // origin), friction on the softened joint under compression, reopening
   // (zero traction), sliding back open, and closing again.
-  paths.push_back({"softened_reopened", "full separation, closed friction, reopened, closed again", p, 3,
-                   straight_legs({{0.1, 0, 0},
-                                  {-0.004, 0, 0},
-                                  {-0.004, 0.05, 0},
-                                  {0.05, 0.05, 0},
-                                  {0.05, 0, 0},
-                                  {-0.002, 0, 0},
-                                  {-0.002, 0.03, 0}})});
-  paths.push_back({"rocking", "rocking toe: separated, closed, slid, reopened, three times", p, 3, rocking_legs(p)});
-  paths.push_back({"cap_reversal", "opening and softening on the tension cap with slip reversals", p, 3,
-                   cap_reversal_legs(p)});
+  paths.push_back(corners("softened_reopened", "full separation, closed friction, reopened, closed again",
+                          straight_legs({{0.1, 0, 0},
+                                         {-0.004, 0, 0},
+                                         {-0.004, 0.05, 0},
+                                         {0.05, 0.05, 0},
+                                         {0.05, 0, 0},
+                                         {-0.002, 0, 0},
+                                         {-0.002, 0.03, 0}})));
+  paths.push_back(corners("rocking", "rocking toe: separated, closed, slid, reopened, three times", rocking_legs(p)));
+  paths.push_back(corners("cap_reversal", "opening and softening on the tension cap with slip reversals",
+                          cap_reversal_legs(p)));
 }
 
 }  // namespace
@@ -236,10 +251,24 @@ double path_length(const BenchPath& path) {
   return L;
 }
 
-std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick) {
+std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick, const std::vector<std::string>& ids) {
+  std::vector<PathEntry> entries;
+  add_calibration_paths(data_dir, quick, entries);
+  add_mixed_paths(data_dir, entries);
   std::vector<BenchPath> paths;
-  add_calibration_paths(data_dir, quick, paths);
-  add_mixed_paths(data_dir, paths);
+  if (ids.empty()) {
+    for (const PathEntry& e : entries) paths.push_back(e.build());
+    return paths;
+  }
+  for (const std::string& id : ids) {
+    auto it = std::find_if(entries.begin(), entries.end(), [&](const PathEntry& e) { return e.id == id; });
+    if (it == entries.end()) {
+      std::string known;
+      for (const PathEntry& e : entries) known += (known.empty() ? "" : ", ") + e.id;
+      throw InputError("--path " + id + ": no such bench path (the paths are: " + known + ")");
+    }
+    paths.push_back(it->build());
+  }
   return paths;
 }
 

@@ -48,10 +48,13 @@ std::vector<Vec3> discretise(const BenchPath& path, double h);
 // Total arc length of the history [mm].
 double path_length(const BenchPath& path);
 
-// Every bench path, in a fixed order. `data_dir` is calibration_data/.
-// `quick` leaves out the Atkinson cyclic test, whose 28 mm of slip travel
-// dominate the run time (the cyclic path at three normal stresses stays).
-// InputError for unreadable data; RunFailure if a mixed-control run fails.
-std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick);
+// Every bench path in a fixed order, or those named in `ids` in their order
+// (each built only when named: most are the history of a mixed-control
+// run). `data_dir` is calibration_data/. `quick` leaves out the Atkinson
+// cyclic test, whose 28 mm of slip travel dominate the run time (the cyclic
+// path at three normal stresses stays). InputError for unreadable data or
+// an id that names no path (the message lists the ids); RunFailure if a
+// mixed-control run fails.
+std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick, const std::vector<std::string>& ids = {});
 
 }  // namespace mortar::harness

@@ -138,19 +138,7 @@ class Study {
 
  private:
   std::vector<BenchPath> selected_paths() const {
-    std::vector<BenchPath> all = bench_paths(o_.data_dir, o_.quick && o_.paths.empty());
-    if (o_.paths.empty()) return all;
-    std::vector<BenchPath> chosen;
-    for (const std::string& id : o_.paths) {
-      auto it = std::find_if(all.begin(), all.end(), [&](const BenchPath& p) { return p.id == id; });
-      if (it == all.end()) {
-        std::string known;
-        for (const BenchPath& p : all) known += (known.empty() ? "" : ", ") + p.id;
-        throw InputError("--path " + id + ": no such bench path (the paths are: " + known + ")");
-      }
-      chosen.push_back(*it);
-    }
-    return chosen;
+    return bench_paths(o_.data_dir, o_.quick && o_.paths.empty(), o_.paths);
   }
 
   void run_path(const BenchPath& path, BenchResult& r) {

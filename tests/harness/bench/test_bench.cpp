@@ -303,9 +303,10 @@ namespace {
 // The traction the default scheme returns at the end of every leg of a bench
 // path, driven at h = 1e-4 mm.
 std::vector<Vec3> corner_tractions(const std::string& id) {
-  const std::vector<BenchPath> all = bench_paths(MJ_CALIBRATION_DATA_DIR, true);
-  const auto path = std::find_if(all.begin(), all.end(), [&](const BenchPath& p) { return p.id == id; });
-  REQUIRE(path != all.end());
+  const std::vector<BenchPath> chosen = bench_paths(MJ_CALIBRATION_DATA_DIR, true, {id});
+  REQUIRE(chosen.size() == 1);
+  const BenchPath* path = &chosen.front();
+  REQUIRE(path->id == id);
   const std::vector<Vec3> history = discretise(*path, 1e-4);
   const Trajectory t = drive_point(path->parameters, path->directions, SchemeControls{}, history, 1, 60, false);
   REQUIRE(t.complete(static_cast<long>(history.size()) - 1));
