@@ -31,8 +31,12 @@ inline bool left_out(const std::vector<LeftOut>& out, const Cell& c, Cut cut) {
                      [&](const LeftOut& o) { return o.set == c.set && o.h == c.h && o.cut == cut; });
 }
 
-// The first cells of a list, fewer under the sanitizers (test_scale.hpp).
+// The first cells of a list, fewer under the sanitizers (test_scale.hpp),
+// where the 1e-5 mm cuts are left out: they run the code of the 1e-4 mm
+// cells over four times the increments, and took most of the splitting
+// tests' time under ASan + UBSan (docs/robustness.md).
 inline std::vector<Cell> first_scaled(std::vector<Cell> v) {
+  if (property_scale() < 1 && !v.empty() && v.front().h < 1e-4) return {};
   v.resize(std::min(v.size(), size_t(scaled(int(v.size())))));
   return v;
 }
