@@ -11,10 +11,10 @@
 #                                        ABI adapters, both precisions (build-tsan/; CI)
 #   bash tools/sanitize.sh               address and thread (CI's two stages)
 #
-# CI's address stage leaves the harness out: it is the code that runs inside
-# Abaqus, and its tests, that the sanitizers must see on every change; the
-# harness (files, command line, calibration, scenes) doubles the stage's time
-# and is the mock solver's, not the user's analysis (docs/robustness.md).
+# CI's address stage leaves the harness out: the sanitizers must see the code
+# that runs inside the user's Abaqus analysis, and its tests, on every change;
+# the harness (mock solvers, files, command line, calibration, scenes) runs
+# outside it and doubled the stage's time (docs/robustness.md).
 #
 # Built with GCC at -O2 -g1 (line tables: reports name file and line; full
 # debug information would cost compile time, not report quality) without

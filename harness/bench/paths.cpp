@@ -194,14 +194,15 @@ std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
 
 void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths) {
   const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
-  auto corners = [&p](const char* id, const char* title, std::vector<std::vector<Vec3>> legs) {
+  // A path given directly as its legs, on these parameters.
+  auto given = [&p](const char* id, const char* title, std::vector<std::vector<Vec3>> legs) {
     return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs}; }};
   };
   // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
   // tangential directions while open, closing into compression, then shear
   // reversed under compression: every regime switch of the law in one path.
-  paths.push_back(corners("open_shear_close", "opening, shear (s1, s2) while open, closing, reversed shear closed",
-                          straight_legs({{0.004, 0, 0}, {0.004, 0.02, 0.01}, {-0.004, 0.02, 0.01}, {-0.004, -0.02, 0.01}})));
+  paths.push_back(given("open_shear_close", "opening, shear (s1, s2) while open, closing, reversed shear closed",
+                        straight_legs({{0.004, 0, 0}, {0.004, 0.02, 0.01}, {-0.004, 0.02, 0.01}, {-0.004, -0.02, 0.01}})));
   paths.push_back({"cyclic_three_sigma_n", [p] {
                      BenchPath b;
                      b.id = "cyclic_three_sigma_n";
@@ -214,22 +215,22 @@ void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths)
   // Zig-zag slip while opening past ft0/kn: the traction path crosses
   // tau = 0 on the tension cap, so large increments jump from one side of
   // the apex of the hyperbola to the other.
-  paths.push_back(corners("apex_jumps", "opening with the slip zig-zagging through zero: jumps across the apex",
-                          straight_legs({{0.0025, 0.002, 0}, {0.006, -0.002, 0}, {0.010, 0.003, 0}, {0.020, -0.003, 0}})));
+  paths.push_back(given("apex_jumps", "opening with the slip zig-zagging through zero: jumps across the apex",
+                        straight_legs({{0.0025, 0.002, 0}, {0.006, -0.002, 0}, {0.010, 0.003, 0}, {0.020, -0.003, 0}})));
   // Opening to separation (wI -> GIC: s = 0, the surface a cone through the
   // origin), friction on the softened joint under compression, reopening
   // (zero traction), sliding back open, and closing again.
-  paths.push_back(corners("softened_reopened", "full separation, closed friction, reopened, closed again",
-                          straight_legs({{0.1, 0, 0},
-                                         {-0.004, 0, 0},
-                                         {-0.004, 0.05, 0},
-                                         {0.05, 0.05, 0},
-                                         {0.05, 0, 0},
-                                         {-0.002, 0, 0},
-                                         {-0.002, 0.03, 0}})));
-  paths.push_back(corners("rocking", "rocking toe: separated, closed, slid, reopened, three times", rocking_legs(p)));
-  paths.push_back(corners("cap_reversal", "opening and softening on the tension cap with slip reversals",
-                          cap_reversal_legs(p)));
+  paths.push_back(given("softened_reopened", "full separation, closed friction, reopened, closed again",
+                        straight_legs({{0.1, 0, 0},
+                                       {-0.004, 0, 0},
+                                       {-0.004, 0.05, 0},
+                                       {0.05, 0.05, 0},
+                                       {0.05, 0, 0},
+                                       {-0.002, 0, 0},
+                                       {-0.002, 0.03, 0}})));
+  paths.push_back(given("rocking", "rocking toe: separated, closed, slid, reopened, three times", rocking_legs(p)));
+  paths.push_back(given("cap_reversal", "opening and softening on the tension cap with slip reversals",
+                        cap_reversal_legs(p)));
 }
 
 }  // namespace
