@@ -28,7 +28,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # per second with the same instrumentation (docs/robustness.md).
 mkdir -p "$build"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
-  -DCMAKE_CXX_COMPILER=clang++ -DMJ_FUZZ=ON -DMJ_SANITIZE=address,undefined > "$build/configure.log" 2>&1 \
+  -DCMAKE_CXX_COMPILER=clang++ -DMJ_FUZZ=ON -DMJ_SANITIZE=address,undefined -DMJ_WARNINGS_AS_ERRORS=ON > "$build/configure.log" 2>&1 \
   || { cat "$build/configure.log"; exit 1; }
 cmake --build "$build" -j"$jobs" --target fuzz_vuinteraction_double fuzz_vuinteraction_single
 

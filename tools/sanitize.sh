@@ -35,7 +35,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 configure() {  # build-dir sanitizers [cmake options...]
   mkdir -p "$1"
   cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1" \
-    -DCMAKE_Fortran_FLAGS_RELWITHDEBINFO="-O2 -g1" -DMJ_SANITIZE="$2" -DMJ_BUILD_TESTS=ON "${@:3}" > "$1/configure.log" 2>&1 \
+    -DCMAKE_Fortran_FLAGS_RELWITHDEBINFO="-O2 -g1" -DMJ_SANITIZE="$2" -DMJ_BUILD_TESTS=ON -DMJ_WARNINGS_AS_ERRORS=ON "${@:3}" > "$1/configure.log" 2>&1 \
     || { cat "$1/configure.log"; exit 1; }
 }
 

@@ -29,7 +29,7 @@ stage() {  # name log command...: runs the stage, its output also to the log
   summary+=("$name: $((SECONDS - start)) s${closing:+ ($closing)}")
 }
 normal() {
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMJ_BUILD_TESTS=ON
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DMJ_BUILD_TESTS=ON -DMJ_WARNINGS_AS_ERRORS=ON
   cmake --build build -j"$jobs"
   ctest --test-dir build --output-on-failure --no-tests=error -j"$jobs"
 }

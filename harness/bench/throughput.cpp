@@ -210,6 +210,41 @@ double median(std::vector<double> v) {
   return v[v.size() / 2];
 }
 
+// The host's reference for the thread rows (ThroughputResult::host_thread_scaling):
+// eight independent multiply-add chains, enough to keep a core's
+// floating-point units busy as the law's updates do, on values that stay in
+// registers. The result goes to a volatile so that the loop is not removed.
+void arithmetic_chains(long iterations) {
+  double x[8] = {1, 2, 3, 4, 5, 6, 7, 8};
+  for (long i = 0; i < iterations; ++i)
+    for (double& v : x) v = v * 0.999999999 + 1e-9;
+  volatile double sink = x[0] + x[1] + x[2] + x[3] + x[4] + x[5] + x[6] + x[7];
+  (void)sink;
+}
+
+// One sample: the same chains on 1 thread, then on 2 threads at once (each
+// the same count), as throughput 2 threads against 1.
+double host_scaling_sample(long iterations) {
+  const Clock::time_point t0 = Clock::now();
+  arithmetic_chains(iterations);
+  const Clock::time_point t1 = Clock::now();
+  std::thread other(arithmetic_chains, iterations);
+  arithmetic_chains(iterations);
+  other.join();
+  const Clock::time_point t2 = Clock::now();
+  return 2.0 * std::chrono::duration<double>(t1 - t0).count() / std::chrono::duration<double>(t2 - t1).count();
+}
+
+double host_thread_scaling(int repeats, double seconds) {
+  const Clock::time_point t0 = Clock::now();
+  arithmetic_chains(100000);  // the calibration: iterations for `seconds`
+  const double per_iteration = std::chrono::duration<double>(Clock::now() - t0).count() / 1e5;
+  const long iterations = std::max(1000L, long(seconds / std::max(per_iteration, 1e-12)));
+  std::vector<double> samples;
+  for (int rep = 0; rep < repeats; ++rep) samples.push_back(host_scaling_sample(iterations));
+  return median(samples);
+}
+
 // Every configuration of one precision. The workloads of a configuration are
 // interleaved within each repeat, so that a slow moment of a shared machine
 // falls on all of them alike; each case is timed over enough increments to
@@ -263,6 +298,7 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   r.points_out_of_cache = o.quick ? 4L * kBlock : 1024L * kBlock;
   run_precision<double>(double_precision_routine(), props, r.points_out_of_cache, o, r, err);
   run_precision<float>(single_precision_routine(), props, r.points_out_of_cache, o, r, err);
+  r.host_thread_scaling = host_thread_scaling(r.repeats, o.quick ? 2e-4 : 0.04);
   return r;
 }
 
@@ -303,7 +339,8 @@ std::string throughput_report(const ThroughputResult& r) {
     << "- elastic / copy <= 2: " << fixed(worst_copy, 2) << ", " << verdict(worst_copy <= 2) << "\n"
     << "- sliding / elastic <= 10: " << fixed(worst_sliding, 2) << ", " << verdict(worst_sliding <= 10) << "\n"
     << "- 2 threads >= 1.8 x 1 thread (law workloads): " << fixed(worst_threads, 2) << ", "
-    << verdict(worst_threads >= 1.8) << "\n";
+    << verdict(worst_threads >= 1.8) << "; this host's own 2-thread scaling (arithmetic sharing nothing, "
+    << "median of " << r.repeats << "): " << fixed(r.host_thread_scaling, 2) << "\n";
   return o.str();
 }
 

@@ -44,6 +44,12 @@ struct ThroughputResult {
   int block = 0, repeats = 0;
   long points_out_of_cache = 0;
   std::vector<ThroughputRow> rows;
+  // What 2 threads give on this host for work that shares nothing: a loop of
+  // independent arithmetic chains, no memory traffic, timed on 1 thread and on
+  // 2 at once (median of the repeats). The 2-thread target is read against it:
+  // a host whose two vCPUs are one core's hyperthreads, or are time-shared
+  // with other guests, stays below 1.8 whatever the routine does.
+  double host_thread_scaling = 0;
 };
 
 // Runs every case; std::runtime_error when a routine call fails or a
