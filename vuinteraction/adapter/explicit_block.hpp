@@ -205,10 +205,13 @@ struct ExplicitBlock {
   }
 
   // The law's traction in Abaqus's signs: pressure positive, shear_sign * tau.
-  static void abaqus_stress(const Setup& setup, const mortar::Vec3& traction, Real* stress_k) {
+  // Always three values, the third 0 in 2D (not an output), so that the
+  // callers' finite tests run over a fixed count: with a count of n_dir, GCC's
+  // vectorised test at -mavx2 and above warns of the elements beyond it.
+  void abaqus_stress(const Setup& setup, const mortar::Vec3& traction, Real* stress_k) const {
     stress_k[0] = Real(-traction[0]);
     stress_k[1] = Real(setup.shear_sign * traction[1]);
-    stress_k[2] = Real(setup.shear_sign * traction[2]);
+    stress_k[2] = counts.n_dir == 2 ? Real(0) : Real(setup.shear_sign * traction[2]);
   }
 
   // The law rejected the increment: it kept the start state; only the counts
@@ -266,7 +269,6 @@ struct ExplicitBlock {
     // rather than loops: in 2D the third component is not an output.
     Real out[4];
     abaqus_stress(setup, r.traction, out);
-    if (counts.n_dir == 2) out[2] = Real(0);
     out[3] = Real(r.elastic_energy);
     // In double precision every value is finite already (the state's test
     // above, elastic_increment's); a float may overflow, which store_elastic
@@ -321,12 +323,8 @@ struct ExplicitBlock {
     std::copy(st, st + count, end);
     storage.store(s, end);
     if (first) mark_initialised(k, end);
-    // A fixed count of stress values, the third 0 in 2D (not an output), as
-    // in elastic_point: with a count of n_dir, GCC's vectorised test at
-    // -mavx2 and above warns of the elements beyond it.
     Real stress_end[3];
     abaqus_stress(setup, r.traction, stress_end);
-    if (counts.n_dir == 2) stress_end[2] = Real(0);
     const Real sed_end = Real(r.elastic_energy);
     const Real spd_end = Real(r.d_inelastic());
     const Real energies[2] = {sed_end, spd_end};
