@@ -9,6 +9,7 @@
 #include "mortar/finite.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/result.hpp"
+#include "mortar/integration/elastic_lanes.hpp"
 #include "mortar/integration/elastic_shortcut.hpp"
 #include "mortar/integration/local_problem.hpp"
 #include "mortar/state.hpp"
@@ -46,7 +47,8 @@ const char* check_state(const State& s);
 // adapters' per-point loops: from a state state_valid() accepts, an increment
 // it books is integrate_increment's result without a tangent, bit for bit (it
 // is the first thing integrate_increment tries); false, the state untouched,
-// for every other increment.
+// for every other increment. lanes::elastic_increment_lanes
+// (integration/elastic_lanes.hpp): the same for two unworn points at once.
 
 // Integrates the separation increment d_separation (law signs) from `state`
 // and overwrites `state` with the end state. Where the chosen scheme fails on

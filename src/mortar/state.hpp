@@ -306,23 +306,32 @@ inline I4 values(const float* a, int h, int l, D4& v) {
   return (hb ^ h2b) | (lb ^ l2b);
 }
 }  // namespace pair_vectors
-inline bool canonical_pairs_into(const float* a, State& s) {
+// The pairs' values in the order of kPairedSlots (value(i), i = 0 .. 10,
+// constant indices once unrolled), and whether every pair is canonical.
+struct PairValues {
+  pair_vectors::D4 v0, v1, v2;
+  bool canonical;
+  double value(int i) const { return i < 3 ? v0[i] : i < 7 ? v1[i - 3] : v2[i - 7]; }
+};
+inline PairValues canonical_pair_values(const float* a) {
   static_assert(kPairRuns[0].count == 3 && kPairRuns[1].count == 8 && kPairRuns[0].low + 3 == kPairRuns[1].low,
                 "the runs as the vectors read them");
   namespace pv = pair_vectors;
-  pv::D4 v0, v1, v2;
-  pv::I4 bad = pv::values(a, kPairRuns[0].high, kPairRuns[0].low, v0) & pv::I4{-1, -1, -1, 0};
-  bad |= pv::values(a, kPairRuns[1].high, kPairRuns[1].low, v1);
-  bad |= pv::values(a, kPairRuns[1].high + 4, kPairRuns[1].low + 4, v2);
-  // Straight from the lanes into the members (constant indices once
-  // unrolled): through an array in memory, the members' later wider loads
-  // would wait on narrower stores (no store forwarding).
+  PairValues p;
+  pv::I4 bad = pv::values(a, kPairRuns[0].high, kPairRuns[0].low, p.v0) & pv::I4{-1, -1, -1, 0};
+  bad |= pv::values(a, kPairRuns[1].high, kPairRuns[1].low, p.v1);
+  bad |= pv::values(a, kPairRuns[1].high + 4, kPairRuns[1].low + 4, p.v2);
+  p.canonical = (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
+  return p;
+}
+inline bool canonical_pairs_into(const float* a, State& s) {
+  const PairValues p = canonical_pair_values(a);
+  // Straight from the lanes into the members: through an array in memory,
+  // the members' later wider loads would wait on narrower stores (no store
+  // forwarding).
   int i = 0;
-  for_each_pair(s, [&](int, int, double& x) {
-    x = i < 3 ? v0[i] : i < 7 ? v1[i - 3] : v2[i - 7];
-    ++i;
-  });
-  return (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
+  for_each_pair(s, [&](int, int, double& x) { x = p.value(i++); });
+  return p.canonical;
 }
 #else
 inline bool canonical_pairs_into(const float* a, State& s) {

@@ -136,11 +136,23 @@ struct ExplicitBlock {
     const StateStorage<Real> storage = StateStorage<Real>::of(counts.n_states);
     if (storage.plain_float()) warn_plain_float(who, counts.n_states);
     int failures = 0;
-    for (int k = 0; k < n_points; ++k) {
+    auto integrate_one = [&](int k) {
       const int failure = integrate_point(setup, storage, k);
-      if (failure == 0) continue;
-      if (++failures <= kMaxPointMessages) report_point(who, k, failure);
-    }
+      if (failure != 0 && ++failures <= kMaxPointMessages) report_point(who, k, failure);
+    };
+    int k = 0;
+#if MORTAR_ELASTIC_LANES
+    // The points in pairs through the elastic lanes first; a point they do
+    // not take goes the way of every other, in the same order.
+    using mortar::lanes::kWidth;
+    if (!storage.plain_float())
+      for (; k + kWidth <= n_points; k += kWidth) {
+        const unsigned done = elastic_lanes(setup, storage, k);
+        for (int l = 0; l < kWidth; ++l)
+          if (!((done >> l) & 1u)) integrate_one(k + l);
+      }
+#endif
+    for (; k < n_points; ++k) integrate_one(k);
     if (failures > kMaxPointMessages) {
       char what[160];
       std::snprintf(what, sizeof what, "%d points of %d failed in this call (first %d shown)", failures, n_points,
@@ -280,6 +292,13 @@ struct ExplicitBlock {
     return 0;
   }
 
+#if MORTAR_ELASTIC_LANES
+  // The elastic shortcut for points k .. k + kWidth - 1 at once
+  // (adapter/explicit_block_lanes.hpp).
+  unsigned elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const;
+  void load_lane(const StateStorage<Real>& storage, int k, int lane, mortar::lanes::ElasticLanes& y) const;
+#endif
+
   // A first call's reference (SDV 22, 23), into the state array `st` or a
   // copy of it.
   void mark_initialised(int k, Real* st) const {
@@ -371,3 +390,5 @@ struct ExplicitBlock {
 };
 
 }  // namespace mj_adapter
+
+#include "adapter/explicit_block_lanes.hpp"

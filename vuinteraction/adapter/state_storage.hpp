@@ -19,6 +19,7 @@
 
 #include "adapter/report.hpp"
 #include "mortar/finite.hpp"
+#include "mortar/integration/lanes.hpp"
 #include "mortar/state.hpp"
 
 namespace mj_adapter {
@@ -76,6 +77,25 @@ struct StateStorage {
       }
     }
     mortar::load_state(st, s);
+    return true;
+  }
+
+  // The elastic lanes' load (ExplicitBlock::elastic_lanes): the paired
+  // variables' values, in the order of mortar::kPairedSlots, and whether the
+  // lanes may take the state: always in double precision; with float pairs
+  // when every pair is canonical (load_elastic()'s `rewrite` false, so that
+  // store_elastic() leaves them where they are). Not for plain floats.
+  bool lane_values(const Real* st, double (&v)[mortar::kPairCount]) const {
+    if constexpr (kSingle) {
+#if MORTAR_ELASTIC_LANES
+      const mortar::PairValues p = mortar::canonical_pair_values(st);
+      for (int i = 0; i < mortar::kPairCount; ++i) v[i] = p.value(i);
+      return p.canonical;
+#else
+      return false;
+#endif
+    }
+    mortar::for_each_pair_slot([&](int i, int high, int) { v[i] = double(st[high]); });
     return true;
   }
 

@@ -9,8 +9,10 @@
 // takes the full path, which decides exactly.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/lanes.hpp"
 #include "mortar/integration/substepper.hpp"
 #include "mortar/physics/damage.hpp"
 #include "mortar/physics/elasticity.hpp"
@@ -18,24 +20,50 @@
 
 namespace mortar {
 
+// The shortcut's two tests, over one point (T = double, a bool each) or over
+// the points in the lanes of a vector (T = lanes::D, integration/
+// elastic_lanes.hpp): one source, so that both decide alike, bit for bit.
+inline double magnitude(double x) { return std::abs(x); }
+inline double larger(double a, double b) { return std::max(a, b); }
+
+// The regime is consistent at the start (normal elastic separation e_n) and
+// not crossed at its end e_n_end beyond the boundary's eps (run(), the same
+// expressions; damage.hpp's crosses()).
+template <class T, class B>
+B regime_kept(B open, T e_n, T e_n_end, T eps) {
+  const B consistent = !((open && e_n < -eps) || (!open && e_n > eps));
+  const B crossed = (open ? e_n_end < 0.0 : e_n_end > 0.0) && magnitude(e_n_end) > eps;
+  return consistent && !crossed;
+}
+
+// A traction (s0, s1, s2) lies inside the surface (alpha, beta, tan(phi) =
+// t) by more than FTOL, proved from upper bounds, not from F itself: with
+// q = beta - sigma_n tan(phi) - (FTOL bound) - margin, F < -(FTOL bound)
+// whenever q > 0 and alpha^2 + tau^2 < q^2, where alpha, beta and tan(phi)
+// are computed as surface_of() does, the squares spare the square roots of F
+// and of FTOL's norm (its bound uses the 1-norm), and the margin, 1e-12 of
+// the terms' size, is a thousand times the round-off by which this
+// evaluation and hypot()'s can differ. A point within that margin of the
+// surface takes the full path.
+template <class T, class Tt>
+auto inside_by_bounds(const Model& M, T alpha, T beta, Tt t, T s0, T s1, T s2) {
+  const T tn = s0 * t;
+  const T abs_sum = magnitude(s0) + magnitude(s1) + magnitude(s2);
+  const T ftol = M.controls.ftol * larger(abs_sum, M.stress_scale) * (1 + 1e-12);
+  const T size = magnitude(alpha) + magnitude(s1) + magnitude(s2) + magnitude(tn) + beta + ftol;
+  const T q = beta - tn - ftol - 1e-12 * size;
+  return q > 0.0 && alpha * alpha + s1 * s1 + s2 * s2 < q * q;
+}
+
 // An increment d from a valid state y is certainly elastic by the rule of
 // IncrementIntegration: the regime is consistent at the start and not crossed
-// (run(), the same expressions), and both the start traction and the elastic
-// end traction K (delta_e + d) lie inside the surface by more than FTOL, so
-// that the segment is neither on the surface nor reaches it (segment()).
-//
-// Inside is proved from upper bounds, not from F itself: with q = beta -
-// sigma_n tan(phi) - (FTOL bound) - margin, F < -(FTOL bound) whenever q > 0
-// and alpha^2 + tau^2 < q^2, where alpha, beta and tan(phi) are computed as
-// surface_of() does, the squares spare the square roots of F and of FTOL's
-// norm (its bound uses the 1-norm), and the margin, 1e-12 of the terms' size,
-// is a thousand times the round-off by which this evaluation and hypot()'s
-// can differ. A point within that margin of the surface takes the full path.
+// (regime_kept), and both the start traction and the elastic end traction
+// K (delta_e + d) lie inside the surface by more than FTOL
+// (inside_by_bounds), so that the segment is neither on the surface nor
+// reaches it (segment()).
 inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
   const double e_n = y.separation[0] - y.plastic[0];
-  const double eps = boundary_eps(M, y);
-  if ((y.open && e_n < -eps) || (!y.open && e_n > eps)) return false;
-  if (crosses(y.open, e_n + d[0]) && std::abs(e_n + d[0]) > eps) return false;
+  if (!regime_kept(y.open, e_n, e_n + d[0], boundary_eps(M, y))) return false;
 
   const Parameters& p = M.p;
   const double s = std::max(0.0, 1.0 - y.wI / p.GIC - y.wII / p.GIIC);
@@ -43,14 +71,7 @@ inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
   const double t = worn ? M.tan_phir + (M.tan_phi0 - M.tan_phir) * exp_or_zero(-p.m * y.wIII) : M.tan_phi0;
   const double C_t = worn ? M.cohesion_term / t : M.cohesion_over_tan_phi0;
   const double alpha = s * 0.5 * (C_t - p.ft0 * t), beta = s * 0.5 * (C_t + p.ft0 * t);
-  auto inside = [&](const Vec3& sigma) {
-    const double tn = sigma[0] * t;
-    const double abs_sum = std::abs(sigma[0]) + std::abs(sigma[1]) + std::abs(sigma[2]);
-    const double ftol = M.controls.ftol * std::max(abs_sum, M.stress_scale) * (1 + 1e-12);
-    const double size = std::abs(alpha) + std::abs(sigma[1]) + std::abs(sigma[2]) + std::abs(tn) + beta + ftol;
-    const double q = beta - tn - ftol - 1e-12 * size;
-    return q > 0 && alpha * alpha + sigma[1] * sigma[1] + sigma[2] * sigma[2] < q * q;
-  };
+  auto inside = [&](const Vec3& sigma) { return inside_by_bounds(M, alpha, beta, t, sigma[0], sigma[1], sigma[2]); };
   const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
   const Vec3 e0 = y.elastic_separation();
   return inside(K.cwiseProduct(e0)) && inside(K.cwiseProduct(e0 + d));

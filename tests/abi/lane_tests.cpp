@@ -1,0 +1,85 @@
+// The elastic lanes (adapter/explicit_block_lanes.hpp) through the routine:
+// points integrated two at a time in a block write what each writes alone
+// (nBlock = 1, where no point has a partner), bit for bit, whatever its
+// partner is doing: elastic or plastic, worn or not, turned by dRot or not,
+// unpaired, or past the block's end; in 2D and 3D, with the plain layout and
+// (single precision) with float pairs (docs/model.md 10, block invariance).
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "explicit_calls.hpp"
+#include "paper_sets.hpp"
+
+namespace {
+
+using mj_abi_test::GeneralContact;
+using Real = mj_real;
+
+// Point k's inputs at step i: pressed at 0.5 MPa, then increments of 1e-7 mm
+// back and forth (elastic) with, on some points at some steps, a slip of
+// 2e-3 mm (plastic, wearing the joint for later steps), an opening, a turn
+// of the tangents or no opposite surface.
+struct Step {
+  double penetration, slip1, slip2, angle;
+};
+Step step_of(int k, int i, double pressed, std::mt19937& rng) {
+  const double back_and_forth = (i % 2 ? 1e-7 : -1e-7) * (1 + k % 3);
+  Step s{pressed + back_and_forth, back_and_forth, -0.5 * back_and_forth, 0.0};
+  const double u = std::uniform_real_distribution<double>(0, 1)(rng);
+  if (u < 0.08) s.slip1 = 2e-3;
+  else if (u < 0.12) s.penetration = -1e-3;   // open
+  else if (u < 0.16) s.angle = 0.02;          // the tangents turn
+  else if (u < 0.18) s.penetration = -1e36;   // no opposite surface
+  return s;
+}
+
+void check_block_against_singles(int n_dir, int n_states) {
+  const std::vector<Real> props = mj_abi_test::props_of<Real>(mortar::testing::almeida_m15(), 14);
+  const double pressed = 0.5 / mortar::testing::almeida_m15().kn;
+  const int n_points = 37;  // odd: the last point has no partner
+  GeneralContact block(n_points, n_dir, props, n_states);
+  std::vector<GeneralContact> singles(n_points, GeneralContact(1, n_dir, props, n_states));
+  std::mt19937 rng(41);
+  int differences = 0;
+  for (int i = 0; i < 60; ++i) {
+    for (int k = 0; k < n_points; ++k) {
+      const Step s = i == 0 ? Step{0, 0, 0, 0} : step_of(k, i, pressed, rng);
+      block.penetration[k] = Real(s.penetration);
+      Real* dd = &block.dr_disp[k * n_dir];
+      dd[1] = Real(s.slip1);
+      if (n_dir == 3) dd[2] = Real(s.slip2);
+      Real* rot = &block.d_rot[4 * k];
+      rot[0] = rot[3] = Real(std::cos(s.angle));
+      rot[1] = Real(-std::sin(s.angle));
+      rot[2] = Real(std::sin(s.angle));
+      GeneralContact& one = singles[k];
+      one.penetration[0] = block.penetration[k];
+      std::copy_n(dd, n_dir, one.dr_disp.begin());
+      std::copy_n(rot, 4, one.d_rot.begin());
+      one.call();
+    }
+    block.call();
+    for (int k = 0; k < n_points; ++k) {
+      const GeneralContact& one = singles[k];
+      differences += !std::equal(one.state.begin(), one.state.end(), block.state_of(k));
+      differences += !std::equal(one.stress.begin(), one.stress.end(), block.stress_of(k));
+      differences += one.sed[0] != block.sed[k] || one.spd[0] != block.spd[k];
+    }
+  }
+  CHECK(differences == 0);
+}
+
+}  // namespace
+
+TEST_CASE("elastic lanes: points in pairs write what each writes alone, bit for bit", "[abi][blocks][lanes]") {
+  for (int n_dir : {2, 3}) {
+    for (int n_states : {mortar::kStateCount, mortar::kPairedStateCount}) {
+      INFO("nDir = " << n_dir << ", state variables = " << n_states);
+      check_block_against_singles(n_dir, n_states);
+    }
+  }
+}

@@ -1,0 +1,84 @@
+// ExplicitBlock's elastic lanes: the elastic shortcut for two points at once
+// (mortar::lanes::elastic_increment_lanes, one point per lane of a vector of
+// doubles), between the solver's arrays and elastic_point's store.
+//
+// A lane takes a point elastic_point would take and that needs none of its
+// special cases: paired, its last increment elastic (SDV 19 = 0), not its
+// first call (SDV 23 = 1), dRot the identity (3D), an unworn joint (w_III =
+// 0: tan(phi) without an exp), every float pair canonical; the state's rules
+// are elastic_point's (flags_valid, one finite test of SDV 1-18, the ranges
+// of mortar::state_in_range). What it books goes out through
+// StateStorage::store_elastic, write_stress and write_energies, as
+// elastic_point's does: the same slots, the same values. Any other point,
+// and a lane whose increment is not proved elastic or whose outputs do not
+// fit in Real, is left untouched for integrate_point.
+#pragma once
+
+namespace mj_adapter {
+
+#if MORTAR_ELASTIC_LANES
+template <class Real>
+void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, int lane,
+                                    mortar::lanes::ElasticLanes& y) const {
+  namespace slot = mortar::slot;
+  const Real* st = state_of(k);
+  const double pen = penetration_of(k);
+  // v: plastic separation 0-2, wI, wII, wIII, dn, ds 3-7, separation 8-10
+  // (mortar::kPairedSlots).
+  double v[mortar::kPairCount];
+  const bool loaded = storage.lane_values(st, v);
+  const bool unworn_in_range = (v[6] >= 0) & (v[6] <= 1) & (v[7] >= 0) & (v[7] <= 1) & (v[3] >= 0) & (v[4] >= 0) &
+                               (v[5] == 0) & (double(st[slot::dissipation_damage]) >= 0);
+  const bool candidate = loaded & unworn_in_range & (pen > kUnpairedPenetration) &
+                         (st[slot::substeps_accepted] == Real(0)) & (st[slot::initialised] == Real(1)) &
+                         flags_valid(st) & all_finite(st, slot::substeps_accepted) &
+                         (counts.n_dir == 2 || is_identity(d_rot_of(k)));
+  for (int i = 0; i < 3; ++i) {
+    y.plastic[i][lane] = v[i];
+    y.separation[i][lane] = v[8 + i];
+  }
+  y.wI[lane] = v[3];
+  y.wII[lane] = v[4];
+  y.dn[lane] = v[6];
+  y.ds[lane] = v[7];
+  y.h[lane] = double(st[slot::open]);
+  // separation_increment(), not a first call.
+  const Real* dd = d_rel_disp_of(k);
+  y.d[0][lane] = (double(st[slot::reference_penetration]) - pen) - v[8];
+  y.d[1][lane] = double(dd[1]);
+  y.d[2][lane] = counts.n_dir > 2 ? double(dd[2]) : 0.0;
+  y.candidate[lane] = candidate ? -1 : 0;
+}
+
+template <class Real>
+unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const {
+  namespace slot = mortar::slot;
+  using mortar::lanes::kWidth;
+  mortar::lanes::ElasticLanes y;
+  for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y);
+  const mortar::lanes::ElasticLaneResult r = mortar::lanes::elastic_increment_lanes(setup.model, y);
+  unsigned done = 0;
+  for (int l = 0; l < kWidth; ++l) {
+    if (!r.elastic[l]) continue;
+    Real* st = state_of(k + l);
+    // The end state as store_elastic reads it: the separation booked, the
+    // tangential plastic and crack components as they are (no turn), the
+    // open flag kept, no substeps.
+    mortar::State s;
+    s.separation = mortar::Vec3(r.separation[0][l], r.separation[1][l], r.separation[2][l]);
+    s.plastic = mortar::Vec3(y.plastic[0][l], y.plastic[1][l], y.plastic[2][l]);
+    s.crack = mortar::Vec3(0.0, double(st[slot::crack_s1]), double(st[slot::crack_s2]));
+    s.open = y.h[l] != 0;
+    Real out[4];
+    abaqus_stress(setup, mortar::Vec3(r.traction[0][l], r.traction[1][l], r.traction[2][l]), out);
+    out[3] = Real(r.energy[l]);
+    if (!storage.store_elastic(s, false, false, out, st)) continue;  // integrate_point rejects it
+    write_stress(k + l, out);
+    write_energies(k + l, double(out[3]), 0.0);  // spd: no dissipation
+    done |= 1u << l;
+  }
+  return done;
+}
+#endif
+
+}  // namespace mj_adapter
