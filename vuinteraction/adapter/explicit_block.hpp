@@ -296,7 +296,10 @@ struct ExplicitBlock {
   // The elastic shortcut for points k .. k + kWidth - 1 at once
   // (adapter/explicit_block_lanes.hpp).
   unsigned elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const;
-  void load_lane(const StateStorage<Real>& storage, int k, int lane, mortar::lanes::ElasticLanes& y) const;
+  struct LaneRules;
+  void load_lane(const StateStorage<Real>& storage, int k, int lane, mortar::lanes::ElasticLanes& y,
+                 LaneRules& rules) const;
+  static mortar::lanes::Mask lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneRules& rules);
 #endif
 
   // A first call's reference (SDV 22, 23), into the state array `st` or a

@@ -17,22 +17,23 @@
 namespace mj_adapter {
 
 #if MORTAR_ELASTIC_LANES
+// The values of the lanes' rules that the increment does not read.
+template <class Real>
+struct ExplicitBlock<Real>::LaneRules {
+  mortar::lanes::D wIII, dissipation_damage, penetration, substeps_accepted, initialised, turn;
+  mortar::lanes::Mask loaded;  // finite SDV 1-18, every float pair canonical
+};
+
 template <class Real>
 void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, int lane,
-                                    mortar::lanes::ElasticLanes& y) const {
+                                    mortar::lanes::ElasticLanes& y, LaneRules& rules) const {
   namespace slot = mortar::slot;
   const Real* st = state_of(k);
   const double pen = penetration_of(k);
   // v: plastic separation 0-2, wI, wII, wIII, dn, ds 3-7, separation 8-10
   // (mortar::kPairedSlots).
   double v[mortar::kPairCount];
-  const bool loaded = storage.lane_values(st, v);
-  const bool unworn_in_range = (v[6] >= 0) & (v[6] <= 1) & (v[7] >= 0) & (v[7] <= 1) & (v[3] >= 0) & (v[4] >= 0) &
-                               (v[5] == 0) & (double(st[slot::dissipation_damage]) >= 0);
-  const bool candidate = loaded & unworn_in_range & (pen > kUnpairedPenetration) &
-                         (st[slot::substeps_accepted] == Real(0)) & (st[slot::initialised] == Real(1)) &
-                         flags_valid(st) & all_finite(st, slot::substeps_accepted) &
-                         (counts.n_dir == 2 || is_identity(d_rot_of(k)));
+  const bool loaded = storage.lane_values(st, v) & all_finite(st, slot::substeps_accepted);
   for (int i = 0; i < 3; ++i) {
     y.plastic[i][lane] = v[i];
     y.separation[i][lane] = v[8 + i];
@@ -47,7 +48,25 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   y.d[0][lane] = (double(st[slot::reference_penetration]) - pen) - v[8];
   y.d[1][lane] = double(dd[1]);
   y.d[2][lane] = counts.n_dir > 2 ? double(dd[2]) : 0.0;
-  y.candidate[lane] = candidate ? -1 : 0;
+  rules.wIII[lane] = v[5];
+  rules.dissipation_damage[lane] = double(st[slot::dissipation_damage]);
+  rules.penetration[lane] = pen;
+  rules.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
+  rules.initialised[lane] = double(st[slot::initialised]);
+  rules.turn[lane] = counts.n_dir == 2 ? 0.0 : double(distance_from_identity(d_rot_of(k)));
+  rules.loaded[lane] = loaded ? -1 : 0;
+}
+
+// The lanes that elastic_point would take and that need none of its special
+// cases: flags_valid (the open flag 0 or 1; SDV 23 = 1: not a first call),
+// mortar::state_in_range with w_III = 0, paired, SDV 19 = 0, dRot the
+// identity.
+template <class Real>
+mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneRules& r) {
+  const mortar::lanes::Mask in_range = y.dn >= 0.0 && y.dn <= 1.0 && y.ds >= 0.0 && y.ds <= 1.0 && y.wI >= 0.0 &&
+                                       y.wII >= 0.0 && r.wIII == 0.0 && r.dissipation_damage >= 0.0;
+  return r.loaded && in_range && (y.h == 0.0 || y.h == 1.0) && r.initialised == 1.0 &&
+         r.penetration > kUnpairedPenetration && r.substeps_accepted == 0.0 && r.turn == 0.0;
 }
 
 template <class Real>
@@ -55,7 +74,9 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
   namespace slot = mortar::slot;
   using mortar::lanes::kWidth;
   mortar::lanes::ElasticLanes y;
-  for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y);
+  LaneRules rules;
+  for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y, rules);
+  y.candidate = lane_candidates(y, rules);
   const mortar::lanes::ElasticLaneResult r = mortar::lanes::elastic_increment_lanes(setup.model, y);
   unsigned done = 0;
   for (int l = 0; l < kWidth; ++l) {

@@ -67,8 +67,12 @@ RotationCheck check_rotation(const Real* drot) {
 // magnitudes is 0 exactly when each is (a NaN or an infinity makes it NaN or
 // infinite).
 template <class Real>
+Real distance_from_identity(const Real* drot) {
+  return std::fabs(drot[0] - Real(1)) + std::fabs(drot[1]) + std::fabs(drot[2]) + std::fabs(drot[3] - Real(1));
+}
+template <class Real>
 bool is_identity(const Real* drot) {
-  return std::fabs(drot[0] - Real(1)) + std::fabs(drot[1]) + std::fabs(drot[2]) + std::fabs(drot[3] - Real(1)) == 0;
+  return distance_from_identity(drot) == 0;
 }
 
 // Brings the tangential components of the state's in-plane vectors (plastic,
