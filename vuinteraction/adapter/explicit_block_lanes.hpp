@@ -33,7 +33,7 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   // v: plastic separation 0-2, wI, wII, wIII, dn, ds 3-7, separation 8-10
   // (mortar::kPairedSlots).
   double v[mortar::kPairCount];
-  const bool loaded = storage.lane_values(st, v) & all_finite(st, slot::substeps_accepted);
+  const bool canonical = storage.lane_values(st, v), finite = all_finite(st, slot::substeps_accepted);
   for (int i = 0; i < 3; ++i) {
     y.plastic[i][lane] = v[i];
     y.separation[i][lane] = v[8 + i];
@@ -54,7 +54,7 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   rules.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
   rules.initialised[lane] = double(st[slot::initialised]);
   rules.turn[lane] = counts.n_dir == 2 ? 0.0 : double(distance_from_identity(d_rot_of(k)));
-  rules.loaded[lane] = loaded ? -1 : 0;
+  rules.loaded[lane] = canonical && finite ? -1 : 0;
 }
 
 // The lanes that elastic_point would take and that need none of its special
