@@ -147,7 +147,12 @@ struct ExplicitBlock {
     using mortar::lanes::kWidth;
     if (!storage.plain_float())
       for (; k + kWidth <= n_points; k += kWidth) {
-        const unsigned done = elastic_lanes(setup, storage, k);
+        // Points whose last increment was plastic (SDV 19 > 0) go the full
+        // path at once (integrate_point): a pair of them is not loaded into
+        // the lanes at all, which spares the plastic path their cost.
+        bool elastic_last = false;
+        for (int l = 0; l < kWidth; ++l) elastic_last |= state_of(k + l)[mortar::slot::substeps_accepted] == Real(0);
+        const unsigned done = elastic_last ? elastic_lanes(setup, storage, k) : 0u;
         for (int l = 0; l < kWidth; ++l)
           if (!((done >> l) & 1u)) integrate_one(k + l);
       }
