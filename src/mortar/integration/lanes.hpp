@@ -20,8 +20,9 @@ namespace mortar {
 #if MORTAR_ELASTIC_LANES
 namespace lanes {
 // Two lanes rather than four: four doubles fill two registers each without
-// AVX, and the spills cost more than the wider lanes save (measured: 619
-// against 530 instructions per single-precision elastic update).
+// AVX, and the spills cost more than the wider lanes save (measured in a
+// first version: 619 against 530 instructions per single-precision elastic
+// update, docs/bench/throughput.md).
 constexpr int kWidth = 2;
 typedef double D __attribute__((vector_size(8 * kWidth)));
 typedef std::int64_t Mask __attribute__((vector_size(8 * kWidth)));  // all bits set: true
