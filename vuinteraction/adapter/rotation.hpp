@@ -60,16 +60,17 @@ RotationCheck check_rotation(const Real* drot) {
   return c;
 }
 
-// Exactly the unit matrix: nothing turns, and nothing is touched, so that an
-// unrotated analysis stays bit for bit what it was (1*x + 0*y would turn a
-// -0 into +0).
-// One comparison (it runs twice on every point-update in 3D): a sum of
-// magnitudes is 0 exactly when each is (a NaN or an infinity makes it NaN or
-// infinite).
+// The sum of dRot's entries' distances from the unit matrix's: 0 exactly
+// when each is (a NaN or an infinity makes it NaN or infinite), so that the
+// test below is one comparison (it runs on every point-update in 3D), and
+// the elastic lanes compare two points' sums at once.
 template <class Real>
 Real distance_from_identity(const Real* drot) {
   return std::fabs(drot[0] - Real(1)) + std::fabs(drot[1]) + std::fabs(drot[2]) + std::fabs(drot[3] - Real(1));
 }
+// Exactly the unit matrix: nothing turns, and nothing is touched, so that an
+// unrotated analysis stays bit for bit what it was (1*x + 0*y would turn a
+// -0 into +0).
 template <class Real>
 bool is_identity(const Real* drot) {
   return distance_from_identity(drot) == 0;

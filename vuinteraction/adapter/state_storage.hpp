@@ -85,19 +85,18 @@ struct StateStorage {
   // lanes may take the state: always in double precision; with float pairs
   // when every pair is canonical (load_elastic()'s `rewrite` false, so that
   // store_elastic() leaves them where they are). Not for plain floats.
+#if MORTAR_ELASTIC_LANES
   bool lane_values(const Real* st, double (&v)[mortar::kPairCount]) const {
     if constexpr (kSingle) {
-#if MORTAR_ELASTIC_LANES
       const mortar::PairValues p = mortar::canonical_pair_values(st);
       for (int i = 0; i < mortar::kPairCount; ++i) v[i] = p.value(i);
       return p.canonical;
-#else
-      return false;
-#endif
+    } else {
+      mortar::for_each_pair_slot([&](int i, int high, int) { v[i] = double(st[high]); });
+      return true;
     }
-    mortar::for_each_pair_slot([&](int i, int high, int) { v[i] = double(st[high]); });
-    return true;
   }
+#endif
 
   // What store() changes after an elastic increment (mortar::elastic_increment):
   // the separation (SDV 12-14), the open flag, the counts and status (SDV

@@ -28,11 +28,11 @@ inline double larger(double a, double b) { return std::max(a, b); }
 
 // The regime is consistent at the start (normal elastic separation e_n) and
 // not crossed at its end e_n_end beyond the boundary's eps (run(), the same
-// expressions; damage.hpp's crosses()).
+// expressions).
 template <class T, class B>
 B regime_kept(B open, T e_n, T e_n_end, T eps) {
   const B consistent = !((open && e_n < -eps) || (!open && e_n > eps));
-  const B crossed = (open ? e_n_end < 0.0 : e_n_end > 0.0) && magnitude(e_n_end) > eps;
+  const B crossed = crosses(open, e_n_end) && magnitude(e_n_end) > eps;
   return consistent && !crossed;
 }
 

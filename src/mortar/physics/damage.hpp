@@ -94,7 +94,12 @@ struct Branches {
 void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow = {});
 
 // Whether an elastic normal separation e_n lies across the regime boundary
-// from a joint in the given regime (Eq. 13: h = 1 for e_n > 0).
-inline bool crosses(bool open, double e_n) { return open ? e_n < 0 : e_n > 0; }
+// from a joint in the given regime (Eq. 13: h = 1 for e_n > 0). A template
+// so that the elastic shortcut's lanes (integration/elastic_lanes.hpp) ask it
+// of two points at once: B is a bool or a vector mask, T a double or a vector.
+template <class B, class T>
+inline B crosses(B open, T e_n) {
+  return open ? e_n < 0.0 : e_n > 0.0;
+}
 
 }  // namespace mortar
