@@ -31,25 +31,39 @@ const char* workload_name(Workload w);
 
 // One configuration: a precision, the points in or out of cache, 1 or 2
 // threads; the median ns per point-update of each workload (wall time over
-// points x increments, so that 2 threads show their throughput).
+// points x increments, so that 2 threads show their throughput), and each
+// repeat's sample, from which the ratios are taken pair by pair (below).
 struct ThroughputRow {
   bool single = false;
   bool in_cache = true;
   int threads = 1;
   long points = 0;
-  double ns[4] = {};  // by Workload
+  double ns[4] = {};                   // by Workload
+  std::vector<double> samples[4];      // by Workload, one per repeat, in the order timed
 };
+
+// The ratio of two sample series timed in the same repeats: the median over
+// the repeats of a[r] / b[r]. A repeat times every workload of a precision
+// and cache case, on 1 and on 2 threads, back to back within about a second,
+// so each ratio compares samples taken at the same moment of a shared host;
+// a ratio of the two medians would compare moments up to a minute apart.
+double paired_ratio(const std::vector<double>& a, const std::vector<double>& b);
 
 struct ThroughputResult {
   int block = 0, repeats = 0;
   long points_out_of_cache = 0;
   std::vector<ThroughputRow> rows;
-  // What 2 threads give on this host for work that shares nothing: a loop of
-  // independent arithmetic chains, no memory traffic, timed on 1 thread and on
-  // 2 at once (median of the repeats). The 2-thread target is read against it:
-  // a host whose two vCPUs are one core's hyperthreads, or are time-shared
-  // with other guests, stays below 1.8 whatever the routine does.
-  double host_thread_scaling = 0;
+  // What 2 threads give on this host for work that shares no memory: two
+  // loops whose values stay in registers, each timed on 1 thread and on 2 at
+  // once (median of the repeats). The 2-thread target is read against them.
+  //   chains: eight multiply-add chains, each waiting on its own last result,
+  //     so that a core's floating-point ports are partly idle;
+  //   ports: sixteen independent additions per iteration, which keep a
+  //     core's adders busy. On two cores both loops scale by 2; where the two
+  //     vCPUs are hyperthreads of one core, the second thread finds the ports
+  //     taken and the port-bound loop scales by little more than 1.
+  double host_thread_scaling = 0;  // chains
+  double host_port_scaling = 0;    // ports
 };
 
 // Runs every case; std::runtime_error when a routine call fails or a

@@ -5,7 +5,8 @@
 // are first order, the accurate outcomes are where they must be, and the
 // timed block reproduced the recorded run. No timing is asserted (tests
 // assert correctness; the bench measures cost). Plus the path
-// discretisation and the timing windows as library functions.
+// discretisation, the timing windows and the throughput bench's paired
+// ratios as library functions.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -21,6 +22,7 @@
 #include "bench/bench.hpp"
 #include "bench/drive.hpp"
 #include "bench/paths.hpp"
+#include "bench/throughput.hpp"
 #include "validation/checks.hpp"
 
 using namespace mortar;
@@ -346,4 +348,15 @@ TEST_CASE("cap_reversal: the shear reverses at every corner, on the tension cap,
     CHECK(c[k][1] * (k % 2 ? -1 : 1) > 0.01);     // tau follows the slip's sign, strength left
     if (k < 4) CHECK(c[k][0] > 0.01);             // the first four on the cap
   }
+}
+
+TEST_CASE("throughput ratios pair the samples of one repeat", "[bench]") {
+  // A host twice as slow in the second repeat: each repeat's ratio is 2, the
+  // ratio of the medians (20 / 5 = 4) is not.
+  const std::vector<double> elastic = {10, 40, 20}, copy = {5, 20, 10};
+  CHECK(paired_ratio(elastic, copy) == 2.0);
+  const std::vector<double> a = {1, 10, 3}, b = {1, 5, 1};  // ratios 1, 2, 3
+  CHECK(paired_ratio(a, b) == 2.0);
+  CHECK_THROWS_WITH(paired_ratio(a, {1, 2}), Catch::Contains("same, non-zero number of samples"));
+  CHECK_THROWS(paired_ratio({}, {}));
 }
