@@ -41,8 +41,8 @@ constexpr double kPressure = 0.5;        // MPa
 constexpr double kElasticStep = 1e-7;    // mm, alternating in sign
 constexpr double kPlasticStep = 1e-5;    // mm of slip per increment
 constexpr double kPreStep = 1e-4;        // mm: the pre-drive to the start states
-constexpr double kSofteningSlip = 0.03;  // mm: past the peak, s about 0.6
-constexpr double kResidualSlip = 1.0;    // mm: s = 0, friction worn to phir
+constexpr double kSofteningSlip = 0.03;  // mm: past the peak, s about 0.06 (w_II = 0.114 of G_IIC = 0.121 N/mm)
+constexpr double kResidualSlip = 1.0;    // mm: s about 2e-9, tan(phi) within 0.1 % of tan(phir)
 
 // The copy pass: what every point-update costs at least. Per point it reads
 // the arrays the routine reads (penetration, drDisp, dRot, the state as far
