@@ -38,15 +38,16 @@ struct ThroughputRow {
   bool in_cache = true;
   int threads = 1;
   long points = 0;
-  double ns[4] = {};                   // by Workload
-  std::vector<double> samples[4];      // by Workload, one per repeat, in the order timed
+  double ns[4] = {};               // by Workload
+  std::vector<double> samples[4];  // by Workload, one per repeat, in the order timed
 };
 
 // The ratio of two sample series timed in the same repeats: the median over
-// the repeats of a[r] / b[r]. A repeat times every workload of a precision
-// and cache case, on 1 and on 2 threads, back to back within about a second,
-// so each ratio compares samples taken at the same moment of a shared host;
-// a ratio of the two medians would compare moments up to a minute apart.
+// the repeats of a[r] / b[r]. A repeat times every workload of one precision
+// and cache case on 1 and on 2 threads back to back (about 0.3 s), so each
+// ratio compares samples of one moment of a shared host; the ratio of two
+// medians can compare samples taken seconds apart, and the host's speed
+// drifts by tens of percent within a run.
 double paired_ratio(const std::vector<double>& a, const std::vector<double>& b);
 
 struct ThroughputResult {
