@@ -1,6 +1,7 @@
 #include "bench/throughput.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iomanip>
@@ -107,14 +108,27 @@ class Cases {
         for (long b = r.first; b < r.last; b += kBlock) call(w, b, int(std::min<long>(kBlock, r.last - b)), variant);
       }
     };
+    // The clock starts when every thread is running: a thread just created
+    // may wait for its CPU to be woken and scheduled (on this KVM guest a
+    // sample of a few ms lost a fifth to a half of its 2-thread speed-up to
+    // that), which an analysis's threads, alive from increment to
+    // increment, do not.
+    std::atomic<int> ready{0};
+    auto all_running = [&] {
+      ready.fetch_add(1);
+      while (ready.load() < threads) {
+      }
+    };
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < shares.size(); ++t)
+      pool.emplace_back([&, t] {
+        all_running();
+        work(shares[t]);
+      });
+    all_running();
     const Clock::time_point t0 = Clock::now();
-    if (threads == 1) {
-      work(shares[0]);
-    } else {
-      std::vector<std::thread> pool;
-      for (const Range& r : shares) pool.emplace_back(work, r);
-      for (std::thread& th : pool) th.join();
-    }
+    work(shares[0]);
+    for (std::thread& th : pool) th.join();
     const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
     for (const Range& r : shares) check(w, r);
     return ns / (double(points) * double(increments));

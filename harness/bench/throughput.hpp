@@ -57,12 +57,12 @@ struct ThroughputResult {
   // What 2 threads give on this host for work that shares no memory: two
   // loops whose values stay in registers, each timed on 1 thread and on 2 at
   // once (median of the repeats). The 2-thread target is read against them.
-  //   chains: eight multiply-add chains, each waiting on its own last result,
-  //     so that a core's floating-point ports are partly idle;
-  //   ports: sixteen independent additions per iteration, which keep a
-  //     core's adders busy. On two cores both loops scale by 2; where the two
-  //     vCPUs are hyperthreads of one core, the second thread finds the ports
-  //     taken and the port-bound loop scales by little more than 1.
+  //   chains: eight multiply-add chains, each waiting on its own last result;
+  //   ports: sixteen independent additions per iteration, more than a core's
+  //     adders finish in the latency of one. On two cores both loops scale by
+  //     2; where the two vCPUs are hyperthreads of one core, the second thread
+  //     finds the adders taken and the port-bound loop scales by little more
+  //     than 1.
   double host_thread_scaling = 0;  // chains
   double host_port_scaling = 0;    // ports
 };
