@@ -109,10 +109,10 @@ class Cases {
       }
     };
     // The clock starts when every thread is running: a thread just created
-    // may wait for its CPU to be woken and scheduled (on this KVM guest a
-    // sample of a few ms lost a fifth to a half of its 2-thread speed-up to
-    // that), which an analysis's threads, alive from increment to
-    // increment, do not.
+    // may wait for its CPU to be woken and scheduled, which an analysis's
+    // threads, alive from increment to increment, do not (on this KVM guest,
+    // samples of 1-8 ms: 2 threads against 1 gave 0.80-1.78 with the
+    // creation timed, 1.17-1.94 without; docs/bench/throughput.md).
     std::atomic<int> ready{0};
     auto all_running = [&] {
       ready.fetch_add(1);
