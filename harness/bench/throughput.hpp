@@ -63,8 +63,8 @@ struct ThroughputResult {
   //     2; where the two vCPUs are hyperthreads of one core, the second thread
   //     finds the adders taken and the port-bound loop scales by little more
   //     than 1.
-  double host_thread_scaling = 0;  // chains
-  double host_port_scaling = 0;    // ports
+  double host_chain_scaling = 0;  // chains
+  double host_port_scaling = 0;   // ports
 };
 
 // Runs every case; std::runtime_error when a routine call fails or a
