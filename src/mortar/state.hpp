@@ -206,6 +206,12 @@ inline bool pair_consistent(float high, float low) {
 // remainder, |x| below about 2^-97), as h + (-0) - h is +0; and h = -0
 // (x = -0), as -0 + 0 is +0. Inline and branch-free: it runs for 11 pairs on
 // every elastic point-update of the single-precision routine.
+// The test performs the store's own two roundings rather than a cheaper
+// condition proved in IEEE arithmetic (such as h + l in float equal to h with
+// v - h equal to l): the same operations, so its verdict stays that of the
+// store under whatever floating-point mode the solver runs in, flush-to-zero
+// and denormals-are-zero included, where such a proof fails for subnormal
+// low parts.
 inline bool pair_canonical(float high, float low, double value) {
   const float h = float(value), l = float(value - double(high));
   std::uint32_t hb, lb, high_b, low_b;
