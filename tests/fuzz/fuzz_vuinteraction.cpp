@@ -29,7 +29,10 @@
 //     may: docs/robustness.md), the flags 0/1,
 //     the reference stored; no message at all when every point succeeds;
 //   - nothing outside state(1:23, 1, k) is written (other node states,
-//     slots beyond 23).
+//     slots beyond 23); state(1:34, 1, k) in single precision with
+//     nStates >= 34, where SDV 24-34 hold the low parts of the float pairs
+//     and each paired variable is the sum of its two parts (docs/model.md 3),
+//     a low part larger than its high part's float spacing a broken rule.
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -131,17 +134,43 @@ bool props_valid(const std::vector<Real>& props, int n_props) {
   return true;
 }
 
+// The slots the routine owns per point: SDV 1-23, and SDV 24-34 for single
+// precision's float pairs when nStates >= 34.
+int owned_slots(int n_states) {
+  return sizeof(Real) == 4 && n_states >= mortar::kPairedStateCount ? mortar::kPairedStateCount : kSlots;
+}
+
+// State variable i as the routine reads it: a paired variable's value is its
+// high part plus its low part, summed in double.
+double value(const Real* s, int i, bool paired) {
+  if (paired)
+    for (const mortar::SlotPair& p : mortar::kPairedSlots)
+      if (p.high == i) return double(s[p.high]) + double(s[p.low]);
+  return double(s[i]);
+}
+
+// A low part belongs to its high part: both finite, and the low part at most
+// the float spacing above the high part's magnitude.
+bool pair_belongs(Real high, Real low) {
+  const float h = std::fabs(float(high));
+  return finite(double(high)) && finite(double(low)) && std::fabs(float(low)) <= std::nextafter(h, INFINITY) - h;
+}
+
 // The documented rules of an incoming state (docs/model.md section 3, the
 // law's check_state, and the adapter's flags).
-const char* state_violation(const Real* s) {
+const char* state_violation(const Real* s, bool paired) {
+  if (paired)
+    for (const mortar::SlotPair& p : mortar::kPairedSlots)
+      if (!pair_belongs(s[p.high], s[p.low])) return "a low part (SDV 24-34) beyond its high part's float spacing";
+  auto v = [&](int i) { return value(s, i, paired); };
   for (int i = 0; i <= slot::energy_unilateral; ++i)
-    if (!finite(double(s[i]))) return "non-finite SDV 1-18";
-  if (!(s[slot::damage_n] >= 0 && s[slot::damage_n] <= 1)) return "d_n outside [0, 1]";
-  if (!(s[slot::damage_s] >= 0 && s[slot::damage_s] <= 1)) return "d_s outside [0, 1]";
-  if (!(s[slot::work_I] >= 0)) return "w_I < 0";
-  if (!(s[slot::work_II] >= 0)) return "w_II < 0";
-  if (!(s[slot::work_III] >= 0)) return "w_III < 0";
-  if (!(s[slot::dissipation_damage] >= 0)) return "D_damage < 0";
+    if (!finite(v(i))) return "non-finite SDV 1-18";
+  if (!(v(slot::damage_n) >= 0 && v(slot::damage_n) <= 1)) return "d_n outside [0, 1]";
+  if (!(v(slot::damage_s) >= 0 && v(slot::damage_s) <= 1)) return "d_s outside [0, 1]";
+  if (!(v(slot::work_I) >= 0)) return "w_I < 0";
+  if (!(v(slot::work_II) >= 0)) return "w_II < 0";
+  if (!(v(slot::work_III) >= 0)) return "w_III < 0";
+  if (!(v(slot::dissipation_damage) >= 0)) return "D_damage < 0";
   if (!(s[slot::open] == 0 || s[slot::open] == 1)) return "open flag not 0 or 1";
   if (!(s[slot::initialised] == 0 || s[slot::initialised] == 1)) return "initialised flag not 0 or 1";
   if (s[slot::initialised] == 1 && !finite(double(s[slot::reference_penetration]))) return "non-finite reference";
@@ -345,17 +374,19 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     return;
   }
 
+  const int slots = owned_slots(b.n_states);
+  const bool paired = slots != kSlots;
   bool any_failure = false;
   for (int k = 0; k < b.n_block; ++k) {
     const Real* s0 = before.state.data() + k * per_point;
     const Real* s1 = b.state.data() + k * per_point;
-    // Nothing beyond state(1:23, 1, k) is touched.
-    for (long i = kSlots; i < per_point; ++i)
-      if (!same_bits(s0[i], s1[i])) fail("%s: point %d: state slot %ld (beyond SDV 23 or node state 2) written", when.c_str(), k + 1, i + 1);
+    // Nothing beyond the routine's slots of state(:, 1, k) is touched.
+    for (long i = slots; i < per_point; ++i)
+      if (!same_bits(s0[i], s1[i])) fail("%s: point %d: state slot %ld (beyond SDV %d or node state 2) written", when.c_str(), k + 1, i + 1, slots);
     const double pen = double(b.penetration[k]);
     if (pen <= -1e30) {  // no opposite surface: nothing happens, nothing carried
       ++stats.unpaired;
-      for (int i = 0; i < kSlots; ++i)
+      for (int i = 0; i < slots; ++i)
         if (!same_bits(s0[i], s1[i])) fail("%s: unpaired point %d: state slot %d changed", when.c_str(), k + 1, i + 1);
       for (int i = 0; i < b.n_dir; ++i)
         if (b.stress[k * b.n_dir + i] != Real(0)) fail("%s: unpaired point %d carries stress", when.c_str(), k + 1);
@@ -367,7 +398,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
           std::strcmp(mortar::failure_name(static_cast<mortar::Failure>(int(status))), "unknown") != 0))
       fail("%s: point %d: SDV 21 = %g is not one of the law's failure codes", when.c_str(), k + 1, double(status));
     ++stats.status[int(status)];
-    const char* corrupt = state_violation(s0);
+    const char* corrupt = state_violation(s0, paired);
     if (corrupt) {
       ++stats.corrupt_reported;
       if (status == 0)
@@ -375,7 +406,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     }
     if (status != 0) {
       any_failure = true;
-      for (int i = 0; i < kSlots; ++i) {
+      for (int i = 0; i < slots; ++i) {
         if (i == slot::substeps_accepted || i == slot::substeps_rejected || i == slot::status) continue;
         if (!same_bits(s0[i], s1[i]))
           fail("%s: point %d rejected (SDV 21 = %g) but state slot %d changed", when.c_str(), k + 1, double(status), i + 1);
@@ -389,7 +420,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
         if (first) {
           dn = finite(pen) ? 0.0 : NAN;
         } else {
-          dn = (double(s0[slot::reference_penetration]) - pen) - double(s0[slot::separation_n]);
+          dn = (double(s0[slot::reference_penetration]) - pen) - value(s0, slot::separation_n, paired);
         }
         bool inc_finite = finite(dn);
         if (!first)
@@ -402,15 +433,15 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
       continue;
     }
     // Accepted: a state that obeys every rule, grown from the incoming one.
-    for (int i = 0; i < kSlots; ++i)
+    for (int i = 0; i < slots; ++i)
       if (!finite(double(s1[i]))) fail("%s: point %d accepted but SDV %d = %g is not finite", when.c_str(), k + 1, i + 1, double(s1[i]));
-    if (const char* v = state_violation(s1)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
+    if (const char* v = state_violation(s1, paired)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
     if (s1[slot::initialised] != Real(1)) fail("%s: point %d accepted but not initialised", when.c_str(), k + 1);
     const Real ref = s0[slot::initialised] == Real(1) ? s0[slot::reference_penetration] : b.penetration[k];
     if (!same_bits(s1[slot::reference_penetration], ref)) fail("%s: point %d: reference penetration changed", when.c_str(), k + 1);
-    if (s1[slot::damage_n] < s0[slot::damage_n] || s1[slot::damage_s] < s0[slot::damage_s])
-      fail("%s: point %d: damage decreased", when.c_str(), k + 1);
-    if (s1[slot::work_I] < s0[slot::work_I] || s1[slot::work_III] < s0[slot::work_III])
+    auto grew = [&](int i) { return value(s1, i, paired) >= value(s0, i, paired); };
+    if (!grew(slot::damage_n) || !grew(slot::damage_s)) fail("%s: point %d: damage decreased", when.c_str(), k + 1);
+    if (!grew(slot::work_I) || !grew(slot::work_III))
       fail("%s: point %d: w_I or w_III decreased", when.c_str(), k + 1);
     if (b.sed[k] < Real(0)) fail("%s: point %d: sed < 0", when.c_str(), k + 1);
   }

@@ -238,6 +238,18 @@ int main(int argc, char** argv) {
     c.n_nod_slv = 0;
     path_seed("valid-no-slave-node-numbers", c, opening(3, 0.003));
   }
+  {
+    Case c;  // 34 state variables: the single-precision routine keeps float pairs, their low parts in SDV 24-34
+    c.n_states = 34;
+    c.n_block = 2;
+    path_seed("valid-34-states-float-pairs", c, pressed_shear(8, -0.001, 0.004));
+    // SDV 32, the low part of delta_n, far beyond its high part's float
+    // spacing: a broken rule in single precision, a slot the double-precision
+    // routine does not read.
+    std::vector<std::vector<Corruption>> corr(8);
+    corr[5] = {{0, 31, 0.5}};
+    path_seed("corrupt-pair-low-part", c, pressed_shear(8, -0.001, 0.004), corr);
+  }
 
   // --- Invalid arguments: reported, outputs finite.
   for (int d : {1, 4, 0, -1, -4, 11}) {
