@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "abi_block.hpp"
+#include "fp_modes.hpp"
 #include "worn_cases.hpp"
 
 using namespace mj_property;
@@ -157,11 +158,12 @@ void check_properties(const Tally& t, int sets, bool rejections_allowed, mortar:
 // family: opening-closing, shear reversals under pressure, pressed shear,
 // opening while sliding, and anything from 1e-12 to 40 elastic limits. One
 // set in four in 2D. One test case per scheme, so that ctest runs them side
-// by side.
-void check_random_paths(mortar::Scheme scheme) {
+// by side. `share`: the fraction of those sets run (the first ones).
+void check_random_paths(mortar::Scheme scheme, double share = 1.0) {
   std::mt19937 rng(20261200 + static_cast<int>(scheme));
   Tally t;
-  const int sets = scheme == mortar::Scheme::implicit ? implicit_sets(50) : scaled(100);
+  const int full = scheme == mortar::Scheme::implicit ? implicit_sets(50) : scaled(100);
+  const int sets = std::max(1, int(share * full));
   for (int set = 0; set < sets; ++set) {
     const mortar::Parameters p = random_parameters(rng);
     CAPTURE(set, p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs);
@@ -194,6 +196,25 @@ TEST_CASE("Property: every state variable finite, damage in [0, 1] and never dec
           "[property]") {
   check_random_paths(mortar::Scheme::implicit);
 }
+
+#if MJ_FP_MODES
+// The same paths (the first half of each scheme's sets) with the CPU's
+// flush-to-zero and denormals-are-zero modes set, as Intel-compiled solvers
+// may run the routine (docs/robustness.md, floating-point modes): where a
+// subnormal value (a worn joint's exp(-m w_III), a tiny increment, a float
+// pair's low part) is flushed to 0, every property still holds.
+TEST_CASE("Property: the path properties with flush-to-zero and denormals-are-zero set (800 + 800 + 400 random "
+          "paths, the three schemes)",
+          "[property][fp-modes]") {
+  const mj_test::FlushDenormals modes;
+  REQUIRE(mj_test::denormals_flushed());
+  for (const mortar::Scheme scheme :
+       {mortar::Scheme::modified_euler, mortar::Scheme::forward_euler, mortar::Scheme::implicit}) {
+    CAPTURE(mortar::scheme_name(scheme));
+    check_random_paths(scheme, 0.5);
+  }
+}
+#endif
 
 TEST_CASE("Property: energy closure, external work = sed + SDV 16 + 17 + 18 (1600 random paths through "
           "vuinteraction_, increments up to 0.1 elastic limit)",
