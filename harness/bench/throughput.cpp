@@ -35,7 +35,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr int kBlock = 128;  // points per call, as in Abaqus/Explicit's blocks
-constexpr long kThreadGap = 64;  // points between two threads' shares (Cases::ranges)
+constexpr long kThreadGap = 1024;  // points between two threads' shares (Cases::ranges)
 // Law signs: the joint is pressed to sigma_n = -0.5 MPa (the penetration that
 // gives it on the undamaged joint) and holds that penetration.
 constexpr double kPressure = 0.5;        // MPa
@@ -152,7 +152,12 @@ class Cases {
   // Each thread's contiguous share of whole blocks, kThreadGap points apart:
   // in Abaqus each thread's blocks are its own arrays, and neighbouring
   // shares would write the same cache lines at their boundary (measured: 2
-  // threads slower than 1 on the copy pass of 2 x 128 points).
+  // threads slower than 1 on the copy pass of 2 x 128 points). A gap of 64
+  // points was not enough: 256 bytes of a float array, which a core's
+  // prefetcher streaming through its share reads past, so that the lines
+  // the other core writes moved between them (single precision in cache,
+  // 2 threads against 1: 1.71-1.75 on the elastic update with 64, 1.94-1.98
+  // with 1024; docs/bench/throughput.md).
   struct Range {
     long first, last;
   };

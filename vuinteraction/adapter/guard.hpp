@@ -61,15 +61,15 @@ void run_call(const Routine& routine, const char* surf_int, int surf_int_length,
       stop_analysis(exit_utility);
       return;
     }
-    Setup setup;
-    const mortar::ValidationError e = read_setup(call.props, call.counts.n_props, routine.defaults, setup);
-    if (!e.ok()) {
+    mortar::ValidationError e;
+    const Setup* setup = cached_setup(call.props, call.counts.n_props, routine.defaults, e);
+    if (!setup) {
       report_property(who, e);
       call.reject(kBadProperty);
       stop_analysis(exit_utility);
       return;
     }
-    if (!call.integrate(who, setup)) stop_analysis(exit_utility);
+    if (!call.integrate(who, *setup)) stop_analysis(exit_utility);
   } catch (...) {
     char what[160];
     std::snprintf(what, sizeof what, "internal error: an exception escaped the law; the %s keeps its start values",
