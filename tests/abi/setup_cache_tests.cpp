@@ -66,19 +66,20 @@ TEST_CASE("Setup cache: two interactions' props alternating on one thread give e
 }
 
 TEST_CASE("Setup cache: props changed in place between calls take effect at the next call", "[abi][props]") {
-  GeneralContact kept(4, 3, m15_props());
-  for (int i = 0; i <= 10; ++i) step(kept, i);
-  // The same arrays, one value changed: a key of the array's address would
-  // miss it.
-  GeneralContact changed = kept;
+  GeneralContact changed(4, 3, m15_props());
+  for (int i = 0; i <= 10; ++i) step(changed, i);
+  GeneralContact unchanged = changed;
+  // The same array, one value changed, and no other call between: a key of
+  // the array's address would miss it.
   changed.props[1] *= Real(0.5);  // ks
-  // The same start, read from a props array this thread has not seen.
+  // The same start and props, from an array this thread has not read (the
+  // default shear sign spelt out).
   GeneralContact fresh = changed;
-  fresh.props[19] = Real(-1);  // the default shear sign, spelt out
-  step(kept, 11);
+  fresh.props[19] = Real(-1);
   step(changed, 11);
+  step(unchanged, 11);
   step(fresh, 11);
-  CHECK(changed.stress != kept.stress);  // ks halved changes the traction
+  CHECK(changed.stress != unchanged.stress);  // ks halved changes the traction
   CHECK(same_outputs(changed, fresh));
 }
 
