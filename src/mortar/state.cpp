@@ -12,30 +12,12 @@ const char* const kLowStateNames[kPairedStateCount - kStateCount] = {
     "dp_n_lo", "dp_s1_lo", "dp_s2_lo", "w_I_lo", "w_II_lo", "w_III_lo",
     "d_n_lo",  "d_s_lo",   "delta_n_lo", "delta_s1_lo", "delta_s2_lo"};
 
-namespace {
-
-// The member behind a paired slot.
-double paired_value(const State& s, int high) {
-  switch (high) {
-    case slot::plastic_n: return s.plastic[0];
-    case slot::plastic_s1: return s.plastic[1];
-    case slot::plastic_s2: return s.plastic[2];
-    case slot::work_I: return s.wI;
-    case slot::work_II: return s.wII;
-    case slot::work_III: return s.wIII;
-    case slot::damage_n: return s.dn;
-    case slot::damage_s: return s.ds;
-    case slot::separation_n: return s.separation[0];
-    case slot::separation_s1: return s.separation[1];
-    default: return s.separation[2];
-  }
-}
-
-}  // namespace
-
+// Each pair straight from its member: pair_of's high part is store_state's
+// float(value), and its guard keeps the pairs' rounding from the vectorised
+// miscompile (state.hpp, load_state_pairs).
 void store_state_pairs(const State& s, float* a) {
   store_state(s, a);
-  for (const SlotPair& p : kPairedSlots) a[p.low] = pair_low(paired_value(s, p.high), a[p.high]);
+  for_each_pair(s, [&](int high, int low, double x) { pair_of(x, a[high], a[low]); });
 }
 
 }  // namespace mortar

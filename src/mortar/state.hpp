@@ -311,6 +311,23 @@ inline I4 values(const float* a, int h, int l, D4& v) {
   std::memcpy(&l2b, &l2, sizeof l2b);
   return (hb ^ h2b) | (lb ^ l2b);
 }
+// Four pairs from high slot h and low slot l on: the lanes (all bits set)
+// that are not pair_consistent, by the same test on the lanes' magnitudes.
+typedef std::uint32_t U4 __attribute__((vector_size(16)));
+inline I4 inconsistent(const float* a, int h, int l) {
+  U4 hb, lb;
+  std::memcpy(&hb, a + h, sizeof hb);
+  std::memcpy(&lb, a + l, sizeof lb);
+  hb &= 0x7fffffffu;
+  lb &= 0x7fffffffu;
+  const U4 next_b = hb + 1u;
+  F4 high, low, next;
+  std::memcpy(&high, &hb, sizeof high);
+  std::memcpy(&low, &lb, sizeof low);
+  std::memcpy(&next, &next_b, sizeof next);
+  constexpr std::uint32_t kInfinity = 0x7f800000u;
+  return ~((hb < kInfinity) & (lb < kInfinity) & (low <= next - high));
+}
 }  // namespace pair_vectors
 // The pairs' values in the order of kPairedSlots (value(i), i = 0 .. 10,
 // constant indices once unrolled), and whether every pair is canonical.
@@ -339,7 +356,21 @@ inline bool canonical_pairs_into(const float* a, State& s) {
   for_each_pair(s, [&](int, int, double& x) { x = p.value(i++); });
   return p.canonical;
 }
+// Whether every pair of the array is pair_consistent, as one test: the
+// single-precision routines' full path runs it on every point-update.
+inline bool pairs_consistent(const float* a) {
+  namespace pv = pair_vectors;
+  pv::I4 bad = pv::inconsistent(a, kPairRuns[0].high, kPairRuns[0].low) & pv::I4{-1, -1, -1, 0};
+  bad |= pv::inconsistent(a, kPairRuns[1].high, kPairRuns[1].low);
+  bad |= pv::inconsistent(a, kPairRuns[1].high + 4, kPairRuns[1].low + 4);
+  return (bad[0] | bad[1] | bad[2] | bad[3]) == 0;
+}
 #else
+inline bool pairs_consistent(const float* a) {
+  int all = 1;
+  for_each_pair_slot([&](int, int high, int low) { all &= pair_consistent(a[high], a[low]); });
+  return all;
+}
 inline bool canonical_pairs_into(const float* a, State& s) {
   int all = 1;
   for_each_pair(s, [&](int high, int low, double& x) {

@@ -341,13 +341,19 @@ struct ExplicitBlock {
 
   // integrate_point's store in single precision: the law's result as floats,
   // a double beyond a float's range coming back as infinity, checked before
-  // anything is stored (the state staged in a copy). Either count as a
-  // constant, so that the copies are inlined rather than calls of memcpy.
+  // anything is stored (the state staged in a copy). The count a constant in
+  // each branch, so that the copies and the finite test are a few vector
+  // instructions rather than calls of memcpy and loops.
   int store_float(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
                   const mortar::IncrementResult& r, bool first) const {
-    const int count = storage.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
-    Real end[mortar::kPairedStateCount];
-    std::copy(st, st + count, end);
+    if (storage.pairs) return store_float_over<mortar::kPairedStateCount>(setup, storage, k, st, s, r, first);
+    return store_float_over<mortar::kStateCount>(setup, storage, k, st, s, r, first);
+  }
+  template <int kCount>
+  int store_float_over(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
+                       const mortar::IncrementResult& r, bool first) const {
+    Real end[kCount];
+    std::copy(st, st + kCount, end);
     storage.store(s, end);
     if (first) mark_initialised(k, end);
     Real stress_end[3];
@@ -355,9 +361,9 @@ struct ExplicitBlock {
     const Real sed_end = Real(r.elastic_energy);
     const Real spd_end = Real(r.d_inelastic());
     const Real energies[2] = {sed_end, spd_end};
-    if (!all_finite(end, count) || !all_finite(stress_end, 3) || !all_finite(energies, 2))
+    if (!all_finite(end, kCount) || !all_finite(stress_end, 3) || !all_finite(energies, 2))
       return reject_point(k, mortar::Failure::non_finite_result);
-    std::copy(end, end + count, st);
+    std::copy(end, end + kCount, st);
     write_stress(k, stress_end);
     write_energies(k, double(sed_end), double(spd_end));
     return 0;

@@ -44,11 +44,7 @@ struct StateStorage {
   // Every low part belongs to its high part (mortar::pair_consistent).
   bool consistent(const Real* st) const {
     if constexpr (kSingle) {
-      if (!pairs) return true;
-      // Without a branch per pair: it runs on every point-update.
-      int all = 1;
-      mortar::for_each_pair_slot([&](int, int high, int low) { all &= mortar::pair_consistent(st[high], st[low]); });
-      return all;
+      return !pairs || mortar::pairs_consistent(st);
     }
     return true;
   }
