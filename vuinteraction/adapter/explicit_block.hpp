@@ -112,14 +112,22 @@ struct ExplicitBlock {
     }
   }
 
+  // Whether a paired point's dRot may turn its directions (3D): check_points
+  // finds out; until it has, every point's dRot is tested where it is used.
+  bool any_turn = true;
+
   // The per-point arguments' rules, before any point is integrated: the
   // first paired point (in 3D) whose dRot is not a rotation is reported and
-  // rejects the block. Returns its adapter code, or 0.
-  int check_points(const Caller& who, const ArgumentNames& names) const {
+  // rejects the block. Returns its adapter code, or 0. Sets any_turn: where
+  // no paired point turns (every unrotated or 2D analysis), the per-point
+  // paths skip their own test of dRot (about fifteen instructions a point).
+  int check_points(const Caller& who, const ArgumentNames& names) {
+    any_turn = false;
     if (counts.n_dir != 3) return 0;
     for (int k = 0; k < n_points; ++k) {
       if (penetration_of(k) <= kUnpairedPenetration) continue;  // not integrated: dRot not used
       if (is_identity(d_rot_of(k))) continue;                     // a joint whose directions do not turn
+      any_turn = true;
       const RotationCheck c = check_rotation(d_rot_of(k));
       if (c.ok()) continue;
       char index[16], where[96];
@@ -268,7 +276,7 @@ struct ExplicitBlock {
                finite = all_finite(st, slot::substeps_accepted);
     if (!(flags & pairs & finite)) return kNotElastic;
     if (!mortar::state_in_range(s)) return kNotElastic;
-    const bool turned = counts.n_dir == 3 && !is_identity(d_rot_of(k));
+    const bool turned = counts.n_dir == 3 && any_turn && !is_identity(d_rot_of(k));
     if (turned) {
       rotate_tangential_state(d_rot_of(k), s);
       // A turn can overflow a finite vector near the range's end; the law
@@ -387,7 +395,7 @@ struct ExplicitBlock {
     if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
     storage.load(st, s);
-    if (counts.n_dir == 3) rotate_tangential_state(d_rot_of(k), s);
+    if (counts.n_dir == 3 && any_turn) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::Vec3 d = separation_increment(k, st, s);
     // elastic_point has tried the shortcut on this state and increment (or
