@@ -26,7 +26,6 @@ using mj_abi_test::Point;
 using mj_test::StderrCapture;
 
 namespace slot = mortar::slot;
-constexpr int kStates = mortar::kStateCount;
 
 std::vector<double> paper_props(const mortar::Parameters& p, int n_props = 14) {
   return mj_abi_test::props_of<double>(p, n_props);

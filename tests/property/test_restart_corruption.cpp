@@ -112,7 +112,7 @@ TEST_CASE("Restart: a state array saved and restored mid-path continues exactly 
     const std::vector<double> penetration = first.penetration;
     first = Block(0, 3, props_of(p));
     Block restarted(n, 3, props_of(p));
-    auto at = [n](int k) { return n - 1 - k; };  // position of point k after the restart
+    auto at = [&](int k) { return n - 1 - k; };  // position of point k after the restart
     for (int k = 0; k < n; ++k) {
       std::copy_n(&state[size_t(k) * kStates], kStates, restarted.state_of(at(k)));
       std::copy_n(&stress[size_t(k) * 3], 3, restarted.stress_of(at(k)));
