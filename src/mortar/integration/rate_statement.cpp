@@ -2,16 +2,6 @@
 
 namespace mortar {
 
-void add(Point& P, const Rates& r, double w) {
-  P.sigma += w * r.dsigma;
-  P.y.plastic += w * r.dplastic;
-  P.y.crack += w * r.dcrack;
-  P.y.wI += w * r.dwI;
-  P.y.wII += w * r.dwII;
-  P.y.wIII += w * r.dwIII;
-  P.y.dissipation_plastic += w * r.dDp;
-}
-
 Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
   Rates r;
   r.dsigma = -dl * f.k_A_m;
