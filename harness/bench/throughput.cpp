@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
@@ -277,42 +278,57 @@ double host_thread_scaling(void (*loop)(long), int repeats, double seconds) {
   return median(samples);
 }
 
-// Every configuration of one precision. Within each repeat every workload
-// is timed on 1 and on 2 threads back to back, so that a slow moment of a
-// shared machine falls on all the samples of that repeat alike and the
-// ratios (paired_ratio) compare samples of one moment; each sample lasts
-// about `seconds`.
+// One precision and cache case: its rows (1 and 2 threads), the increments
+// that make each of its samples last about `seconds`, and its timer.
+struct CaseRows {
+  ThroughputRow rows[2];
+  long increments[2][4] = {};
+  std::function<double(Workload, long points, int threads, long increments)> time;
+};
+
+// The in- and out-of-cache cases of one precision, warmed up and sized.
 template <class Real>
-void run_precision(VuinteractionRoutine<Real> routine, const std::vector<double>& props, long out_points,
-                   const ThroughputOptions& o, ThroughputResult& r, std::ostream& err) {
-  const double seconds = o.quick ? 2e-4 : 0.04;
-  Cases<Real> cases(routine, props, Cases<Real>::capacity(std::max<long>(out_points, 2 * kBlock)));
+void add_cases(Cases<Real>& cases, long out_points, double seconds, std::vector<CaseRows>& out) {
   for (const bool in_cache : {true, false}) {
-    ThroughputRow rows[2];
-    long increments[2][4];
+    CaseRows c;
+    c.time = [&cases](Workload w, long points, int threads, long increments) {
+      return cases.time(w, points, threads, increments);
+    };
     for (int t = 0; t < 2; ++t) {
-      ThroughputRow& row = rows[t];
+      ThroughputRow& row = c.rows[t];
       row.single = sizeof(Real) == 4;
       row.in_cache = in_cache;
       row.threads = t + 1;
       row.points = in_cache ? long(kBlock) * row.threads : out_points;
       for (const Workload w : kWorkloads) {  // warm-up, and the number of increments
         const double ns = cases.time(w, row.points, row.threads, 2);
-        increments[t][int(w)] = std::max(2L, long(seconds * 1e9 / (ns * double(row.points))) & ~1L);
+        c.increments[t][int(w)] = std::max(2L, long(seconds * 1e9 / (ns * double(row.points))) & ~1L);
       }
     }
-    for (int rep = 0; rep < r.repeats; ++rep)
+    out.push_back(std::move(c));
+  }
+}
+
+// Every case, repeat by repeat. Within a repeat each case times every
+// workload on 1 and on 2 threads back to back, so that a slow moment of a
+// shared machine falls on all the samples of that case alike and the ratios
+// (paired_ratio) compare samples of one moment; and each repeat goes through
+// all four cases, so that a slow spell of a second or two falls on a few
+// repeats of every case rather than on all the repeats of one (their median
+// then leaves it out). Each sample lasts about `seconds`.
+void run_cases(std::vector<CaseRows>& cases, const ThroughputOptions& o, ThroughputResult& r, std::ostream& err) {
+  for (int rep = 0; rep < r.repeats; ++rep) {
+    for (CaseRows& c : cases)
       for (const Workload w : kWorkloads)
-        for (int t = 0; t < 2; ++t)
-          rows[t].samples[int(w)].push_back(cases.time(w, rows[t].points, rows[t].threads, increments[t][int(w)]));
-    for (ThroughputRow& row : rows) {
+        for (ThroughputRow& row : c.rows)
+          row.samples[int(w)].push_back(c.time(w, row.points, row.threads, c.increments[row.threads - 1][int(w)]));
+    if (!o.quiet) err << "bench --throughput: repeat " << rep + 1 << " of " << r.repeats << " done\n";
+  }
+  for (CaseRows& c : cases)
+    for (ThroughputRow& row : c.rows) {
       for (const Workload w : kWorkloads) row.ns[int(w)] = median(row.samples[int(w)]);
       r.rows.push_back(row);
     }
-    if (!o.quiet)
-      err << "bench --throughput: " << (rows[0].single ? "single" : "double") << ", "
-          << (in_cache ? "in cache" : "out of cache") << ", 1 and 2 threads done\n";
-  }
 }
 
 std::string fixed(double x, int digits) {
@@ -340,8 +356,14 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   // Out of cache: about 40 MB of the arrays the routine touches (double),
   // ten times the 4 MB second-level cache of the machine in README "Speed".
   r.points_out_of_cache = o.quick ? 4L * kBlock : 1024L * kBlock;
-  run_precision<double>(double_precision_routine(), props, r.points_out_of_cache, o, r, err);
-  run_precision<float>(single_precision_routine(), props, r.points_out_of_cache, o, r, err);
+  const double seconds = o.quick ? 2e-4 : 0.04;
+  const long capacity = Cases<double>::capacity(std::max<long>(r.points_out_of_cache, 2 * kBlock));
+  Cases<double> doubles(double_precision_routine(), props, capacity);
+  Cases<float> singles(single_precision_routine(), props, capacity);
+  std::vector<CaseRows> cases;
+  add_cases(doubles, r.points_out_of_cache, seconds, cases);
+  add_cases(singles, r.points_out_of_cache, seconds, cases);
+  run_cases(cases, o, r, err);
   r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, o.quick ? 2e-4 : 0.04);
   r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, o.quick ? 2e-4 : 0.04);
   return r;

@@ -20,7 +20,7 @@ namespace mortar::harness {
 struct ThroughputOptions {
   std::string data_dir;  // calibration_data/ (the M15 parameter set)
   bool quick = false;    // tiny sizes: checks that it runs, measures nothing
-  int repeats = 7;       // timed repeats per case; medians are reported
+  int repeats = 11;      // timed repeats per case; medians are reported
   bool quiet = false;    // no progress on stderr
 };
 
