@@ -108,7 +108,10 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // point inside the surface: what follows is decided afresh, elastic up to
     // the surface first, as a call that starts there would (increment.cpp).
     if (normal == Landing::lands || separates) return std::min(T, 1.0);
-    dT = scheme.next_size(dT);
+    // The next substep's size, when there is one: a run that reaches T = 1
+    // has done its segment, and no later substep of the increment reads what
+    // next_size() keeps (its square root and division are then not waited on).
+    if (T < 1) dT = scheme.next_size(dT);
   }
   return 1;
 }
