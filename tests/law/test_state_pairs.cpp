@@ -357,8 +357,9 @@ TEST_CASE("State pairs: canonical_pairs_into sets each paired member as load_sta
 TEST_CASE("State pairs: pairs_consistent is pair_consistent over the 11 pairs, whatever the other slots hold",
           "[state][pairs]") {
   // The vectorised test of the single-precision full path against its scalar
-  // definition, on stored states with one pair or one slot that is not a low
-  // part (SDV 4-23) spoilt: a low part beyond its spacing, NaN, infinity.
+  // definition, on stored states with one pair spoilt, or one slot of SDV
+  // 1-23 that belongs to no pair: NaN, infinity, a low part beyond its
+  // spacing.
   std::mt19937_64 rng(53);
   std::uniform_real_distribution<double> value(-2.0, 2.0);
   const float spoilt[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), 1e-3f,
