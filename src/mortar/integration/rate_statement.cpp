@@ -2,16 +2,13 @@
 
 namespace mortar {
 
+// Every increment built in place (a default Rates would write its zeros
+// first, and they stay: the members are then written through Eigen's
+// assignments).
 Rates along_flow(const Model& M, const Vec3& sigma, const Flow& f, double dl) {
-  Rates r;
-  r.dsigma = -dl * f.k_A_m;
-  r.dplastic = dl * f.m;
-  r.dcrack = crack_ratio(M).cwiseProduct(r.dplastic);
-  r.dwI = dl * f.gI;
-  r.dwII = dl * f.gII;
-  r.dwIII = dl * f.gIII;
-  r.dDp = sigma.dot(r.dplastic);
-  return r;
+  const Vec3 dplastic = dl * f.m;
+  return Rates{-dl * f.k_A_m, dplastic, crack_ratio(M).cwiseProduct(dplastic), dl * f.gI, dl * f.gII, dl * f.gIII,
+               sigma.dot(dplastic), false, false, Branches{}};
 }
 
 namespace {
