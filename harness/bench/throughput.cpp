@@ -364,8 +364,8 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   add_cases(doubles, r.points_out_of_cache, seconds, cases);
   add_cases(singles, r.points_out_of_cache, seconds, cases);
   run_cases(cases, o, r, err);
-  r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, o.quick ? 2e-4 : 0.04);
-  r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, o.quick ? 2e-4 : 0.04);
+  r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, seconds);
+  r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, seconds);
   return r;
 }
 

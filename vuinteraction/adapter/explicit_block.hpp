@@ -115,6 +115,7 @@ struct ExplicitBlock {
   // Whether a paired point's dRot may turn its directions (3D): check_points
   // finds out; until it has, every point's dRot is tested where it is used.
   bool any_turn = true;
+  bool may_turn() const { return counts.n_dir == 3 && any_turn; }
 
   // The per-point arguments' rules, before any point is integrated: the
   // first paired point (in 3D) whose dRot is not a rotation is reported and
@@ -276,7 +277,7 @@ struct ExplicitBlock {
                finite = all_finite(st, slot::substeps_accepted);
     if (!(flags & pairs & finite)) return kNotElastic;
     if (!mortar::state_in_range(s)) return kNotElastic;
-    const bool turned = counts.n_dir == 3 && any_turn && !is_identity(d_rot_of(k));
+    const bool turned = may_turn() && !is_identity(d_rot_of(k));
     if (turned) {
       rotate_tangential_state(d_rot_of(k), s);
       // A turn can overflow a finite vector near the range's end; the law
@@ -395,7 +396,7 @@ struct ExplicitBlock {
     if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
     storage.load(st, s);
-    if (counts.n_dir == 3 && any_turn) rotate_tangential_state(d_rot_of(k), s);
+    if (may_turn()) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::Vec3 d = separation_increment(k, st, s);
     // elastic_point has tried the shortcut on this state and increment (or

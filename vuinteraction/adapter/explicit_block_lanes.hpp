@@ -53,7 +53,7 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   rules.penetration[lane] = pen;
   rules.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
   rules.initialised[lane] = double(st[slot::initialised]);
-  rules.turn[lane] = counts.n_dir == 2 || !any_turn ? 0.0 : double(distance_from_identity(d_rot_of(k)));
+  rules.turn[lane] = may_turn() ? double(distance_from_identity(d_rot_of(k))) : 0.0;
   rules.loaded[lane] = canonical && finite ? -1 : 0;
 }
 
