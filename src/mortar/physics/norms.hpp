@@ -1,13 +1,18 @@
 // The length of a 2-vector as std::hypot gives it, without the call where one
-// side is negligible:
+// side is small against the other:
 //  - hypot(x, +-0) is fabs(x) exactly (C11 Annex F.10.4.3), and hypot is
 //    symmetric. A 2D joint has no second shear component, and the fully
 //    softened surface has alpha = 0 (Eq. 3 with s = 0).
 //  - A side at most 2^-26.5 of the other: the correctly rounded length is the
-//    longer side (kNegligibleSide, below), and glibc's hypot returns it
-//    (tests/law/test_norms.cpp). On the residual surface alpha = s a can be
-//    that small against |tau| (Eq. 3, docs/model.md 4): for the Almeida M15
-//    set near 1 MPa, with s below about 2.5e-9 (docs/bench/throughput.md).
+//    longer side (kNegligibleSide, below), and glibc's hypot returns it.
+//  - A side at most 1.5^0.5 2^-26 of the other: the correctly rounded length
+//    is the longer side or the double after it, and one fused multiply-add
+//    tells which (kOneUlpSide, below). Where that decision is close (within
+//    kOneUlpBand) hypot is called after all: glibc's hypot is not correctly
+//    rounded there (tests/law/test_norms.cpp).
+// On the residual surface alpha = s a is that small against |tau| (Eq. 3,
+// docs/model.md 4): for the Almeida M15 set at 0.5-1.3 MPa after 0.2-3 mm
+// of slip alpha / |tau| is 0.9e-8 to 1.3e-8 (docs/bench/throughput.md).
 // hypot itself rescales against overflow and corrects its square root with a
 // division: about fifty instructions, most of them on the dependency chain
 // of the rate statement (about 15 ns a call on the AMD EPYC host of
@@ -15,6 +20,8 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace mortar {
 
@@ -28,6 +35,30 @@ namespace mortar {
 // within 2^-25 of a c: b^2 < a ulp(a) in each case.)
 inline constexpr double kNegligibleSide = 0x1.6a09e667f3bccp-27;
 
+// The largest double c with c (1 + 2^-53) <= 1.5^0.5 2^-26. With b <= a c
+// (the product rounded) and a normal, b^2 <= 1.5 a^2 2^-52 < 3 a ulp(a), as
+// ulp(a) / a > 2^-53. So a^2 + b^2 < (a + 1.5 ulp(a))^2: the length rounds
+// to a or to a + ulp(a) (exact: a is a multiple of ulp(a)), the latter when
+// b^2 - a ulp(a) > ulp(a)^2 / 4, past the midpoint a + ulp(a)/2.
+inline constexpr double kOneUlpSide = 0x1.3988e1409212dp-26;
+// Within this many ulp(a)^2 of that midpoint the decision is left to hypot.
+// glibc's hypot (2.36) rounds the wrong way up to 1.75 ulp(a)^2 from it
+// (245 130 of 20 000 000 pairs drawn close to it; none farther out), as its
+// first square root of a^2 + b^2 is rounded. Outside the band the decision
+// is exact: b^2 - a ulp(a) is rounded once by the fused multiply-add, the
+// bounds (0.25 +- kOneUlpBand) ulp(a)^2 are doubles, and rounding is monotonic.
+inline constexpr double kOneUlpBand = 8;
+
+// ulp(a) for a normal a >= 2^-970: the power of two 52 binades below a's.
+inline double ulp_of_normal(double a) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &a, sizeof bits);
+  bits = (bits & 0x7ff0000000000000ull) - (std::uint64_t(52) << 52);
+  double u;
+  std::memcpy(&u, &bits, sizeof u);
+  return u;
+}
+
 inline double hypot_of(double x, double y) {
   if (y == 0) return std::abs(x);
   if (x == 0) return std::abs(y);
@@ -36,6 +67,14 @@ inline double hypot_of(double x, double y) {
   const double ax = std::abs(x), ay = std::abs(y);
   if (ay <= ax * kNegligibleSide) return ax;
   if (ax <= ay * kNegligibleSide) return ay;
+  const double a = ax < ay ? ay : ax, b = ax < ay ? ax : ay;
+  // Within 2^+-400, a ulp(a) and ulp(a)^2 are normal and exact.
+  if (b <= a * kOneUlpSide && a >= 0x1p-400 && a <= 0x1p400) {
+    const double u = ulp_of_normal(a), u2 = u * u;
+    const double excess = std::fma(b, b, -a * u);
+    if (excess > (0.25 + kOneUlpBand) * u2) return a + u;
+    if (excess < (0.25 - kOneUlpBand) * u2) return a;
+  }
   return std::hypot(x, y);
 }
 
