@@ -103,7 +103,10 @@ class Cases {
     const std::vector<Range> shares = ranges(points, threads);
     for (const Range& r : shares) restore(w, r);
     const bool plastic = w == Workload::softening || w == Workload::sliding;
-    auto work = [&](Range r) {
+    // By value, and copied into each thread: the loop reads its bounds again
+    // after every call of the (opaque) routine, and should not read them
+    // from a line of the first thread's stack.
+    auto work = [this, w, plastic, increments](Range r) {
       for (long i = 0; i < increments; ++i) {
         const int variant = plastic ? 0 : int(i % 2);
         for (long b = r.first; b < r.last; b += kBlock) call(w, b, int(std::min<long>(kBlock, r.last - b)), variant);
@@ -123,7 +126,7 @@ class Cases {
     std::atomic<int> finished{0};
     std::vector<std::thread> pool;
     for (size_t t = 1; t < shares.size(); ++t)
-      pool.emplace_back([&, t] {
+      pool.emplace_back([&, t, work] {
         all_running();
         work(shares[t]);
         finished.fetch_add(1);
@@ -145,7 +148,9 @@ class Cases {
   }
 
   // Points needed for `points` on up to 2 threads.
-  static long capacity(long points) { return points + kThreadGap; }
+  // (A gap after the last share too: the next allocation's first bytes may
+  // share its last cache line.)
+  static long capacity(long points) { return points + 2 * kThreadGap; }
 
  private:
   static int n_states() { return sizeof(Real) == 4 ? kPairedStateCount : kStateCount; }
@@ -295,27 +300,25 @@ struct CaseRows {
   std::function<double(Workload, long points, int threads, long increments)> time;
 };
 
-// The in- and out-of-cache cases of one precision, warmed up and sized.
+// One precision's in- or out-of-cache case, on `cases`, warmed up and sized.
 template <class Real>
-void add_cases(Cases<Real>& cases, long out_points, double seconds, std::vector<CaseRows>& out) {
-  for (const bool in_cache : {true, false}) {
-    CaseRows c;
-    c.time = [&cases](Workload w, long points, int threads, long increments) {
-      return cases.time(w, points, threads, increments);
-    };
-    for (int t = 0; t < 2; ++t) {
-      ThroughputRow& row = c.rows[t];
-      row.single = sizeof(Real) == 4;
-      row.in_cache = in_cache;
-      row.threads = t + 1;
-      row.points = in_cache ? long(kBlock) * row.threads : out_points;
-      for (const Workload w : kWorkloads) {  // warm-up, and the number of increments
-        const double ns = cases.time(w, row.points, row.threads, 2);
-        c.increments[t][int(w)] = std::max(2L, long(seconds * 1e9 / (ns * double(row.points))) & ~1L);
-      }
+void add_case(Cases<Real>& cases, bool in_cache, long out_points, double seconds, std::vector<CaseRows>& out) {
+  CaseRows c;
+  c.time = [&cases](Workload w, long points, int threads, long increments) {
+    return cases.time(w, points, threads, increments);
+  };
+  for (int t = 0; t < 2; ++t) {
+    ThroughputRow& row = c.rows[t];
+    row.single = sizeof(Real) == 4;
+    row.in_cache = in_cache;
+    row.threads = t + 1;
+    row.points = in_cache ? long(kBlock) * row.threads : out_points;
+    for (const Workload w : kWorkloads) {  // warm-up, and the number of increments
+      const double ns = cases.time(w, row.points, row.threads, 2);
+      c.increments[t][int(w)] = std::max(2L, long(seconds * 1e9 / (ns * double(row.points))) & ~1L);
     }
-    out.push_back(std::move(c));
   }
+  out.push_back(std::move(c));
 }
 
 // Every case, repeat by repeat. Within a repeat each case times every
@@ -366,12 +369,24 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   // ten times the 4 MB second-level cache of the machine in README "Speed".
   r.points_out_of_cache = o.quick ? 4L * kBlock : 1024L * kBlock;
   const double seconds = o.quick ? 2e-4 : 0.04;
-  const long capacity = Cases<double>::capacity(std::max<long>(r.points_out_of_cache, 2 * kBlock));
-  Cases<double> doubles(double_precision_routine(), props, capacity);
-  Cases<float> singles(single_precision_routine(), props, capacity);
+  // Each case its own arrays, sized to it: the points in cache in arrays of
+  // their own size, not at the start of the out-of-cache case's arrays, which
+  // the allocator maps page-aligned, every array's first point at the same
+  // offset in a page, so that the first points of the twenty arrays fall in
+  // one set of the first-level cache (double elastic in cache there, the
+  // profiling driver: 28-31 ns per point-update against 25-27, 2 threads
+  // against 1 1.8-1.9 against 2.0; docs/bench/throughput.md).
+  const long in_capacity = Cases<double>::capacity(2 * kBlock);
+  const long out_capacity = Cases<double>::capacity(r.points_out_of_cache);
+  Cases<double> doubles_in(double_precision_routine(), props, in_capacity);
+  Cases<double> doubles_out(double_precision_routine(), props, out_capacity);
+  Cases<float> singles_in(single_precision_routine(), props, in_capacity);
+  Cases<float> singles_out(single_precision_routine(), props, out_capacity);
   std::vector<CaseRows> cases;
-  add_cases(doubles, r.points_out_of_cache, seconds, cases);
-  add_cases(singles, r.points_out_of_cache, seconds, cases);
+  add_case(doubles_in, true, r.points_out_of_cache, seconds, cases);
+  add_case(doubles_out, false, r.points_out_of_cache, seconds, cases);
+  add_case(singles_in, true, r.points_out_of_cache, seconds, cases);
+  add_case(singles_out, false, r.points_out_of_cache, seconds, cases);
   run_cases(cases, o, r, err);
   r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, seconds);
   r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, seconds);
