@@ -114,7 +114,7 @@ TEST_CASE("Norms: a side at most kNegligibleSide of the other leaves the correct
     const Pair p = near_threshold(rng);
     if (!(p.b <= p.a * kNegligibleSide)) continue;
     ++taken;
-    const double ulp = std::nextafter(p.a, std::numeric_limits<double>::infinity()) - p.a;
+    const double ulp = ulp_above(p.a);
     const __float128 b2 = __float128(p.b) * p.b;
     const __float128 midpoint_gap = __float128(p.a) * ulp + __float128(ulp) * ulp / 4;
     REQUIRE(b2 < midpoint_gap);
@@ -127,7 +127,7 @@ TEST_CASE("Norms: a side at most kNegligibleSide of the other leaves the correct
   for (int n = 0; n < 200000 && !beyond; ++n) {
     const double a = std::ldexp(1 + 1e-6 * double(n % 1000) / 1000, n % 400 - 200);
     const double b = 2 * a * kNegligibleSide;
-    const double ulp = std::nextafter(a, std::numeric_limits<double>::infinity()) - a;
+    const double ulp = ulp_above(a);
     beyond = !(__float128(b) * b < __float128(a) * ulp + __float128(ulp) * ulp / 4);
   }
   CHECK(beyond);
