@@ -1,4 +1,4 @@
-#include "mortar/state.hpp"
+#include "mortar/state_pairs.hpp"
 
 namespace mortar {
 

@@ -20,7 +20,7 @@
 #include "mortar/integrator.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_pairs.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

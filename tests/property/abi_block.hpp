@@ -17,6 +17,7 @@
 #include "mortar/integrator.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
+#include "mortar/state_pairs.hpp"
 #include "random_parameters.hpp"
 #include "stderr_capture.hpp"
 #include "test_scale.hpp"

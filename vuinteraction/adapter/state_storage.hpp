@@ -20,7 +20,7 @@
 #include "adapter/report.hpp"
 #include "mortar/finite.hpp"
 #include "mortar/integration/lanes.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_pairs.hpp"
 
 namespace mj_adapter {
 
