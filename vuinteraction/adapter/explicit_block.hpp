@@ -34,6 +34,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include "adapter/arguments.hpp"
 #include "adapter/report.hpp"
@@ -314,6 +315,7 @@ struct ExplicitBlock {
   void load_lane(const StateStorage<Real>& storage, int k, int lane, mortar::lanes::ElasticLanes& y,
                  LaneRules& rules) const;
   static mortar::lanes::Mask lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneRules& rules);
+  static mortar::lanes::Mask fits_in_real(const mortar::lanes::ElasticLaneResult& r);
 #endif
 
   // A first call's reference (SDV 22, 23), into the state array `st` or a

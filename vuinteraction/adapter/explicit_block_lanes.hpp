@@ -8,10 +8,11 @@
 // 0: tan(phi) without an exp), every float pair canonical; the state's rules
 // are elastic_point's (flags_valid, one finite test of SDV 1-18, the ranges
 // of mortar::state_in_range). What it books goes out through
-// StateStorage::store_elastic, write_stress and write_energies, as
-// elastic_point's does: the same slots, the same values. Any other point,
-// and a lane whose increment is not proved elastic or whose outputs do not
-// fit in Real, is left untouched for integrate_point.
+// StateStorage::store_elastic_lane, write_stress and write_energies, as
+// elastic_point's does through store_elastic: the same slots, the same
+// values. Any other point, and a lane whose increment is not proved elastic
+// or whose values may not fit in Real (fits_in_real), is left untouched for
+// integrate_point.
 #pragma once
 
 namespace mj_adapter {
@@ -69,6 +70,30 @@ mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::El
          r.penetration > kUnpairedPenetration && r.substeps_accepted == 0.0 && r.turn == 0.0;
 }
 
+// The lanes proved elastic whose end values all fit in Real. In single
+// precision: the separation, traction and energy at most FLT_MAX in
+// magnitude, so that their conversions to float (the stress, sed, the
+// separation's pairs, whose low parts lie within a spacing of their high
+// parts) are finite, in any rounding mode. (SDV 22, which store_elastic
+// tests too, is finite in a lane proved elastic: its increment is computed
+// from it.) A lane beyond goes to integrate_point, whose store tests the
+// floats themselves (StateStorage::store_elastic): the same points are
+// rejected, or stored with the same values. Compared in double, two points at once: the same
+// test on the floats, point by point, took 50 of the single-precision
+// elastic update's 521 instructions, and 7 % of its time.
+template <class Real>
+mortar::lanes::Mask ExplicitBlock<Real>::fits_in_real(const mortar::lanes::ElasticLaneResult& r) {
+  if constexpr (!StateStorage<Real>::kSingle) {
+    return r.elastic;  // a finite double is itself
+  } else {
+    using mortar::magnitude;
+    const double most = std::numeric_limits<float>::max();
+    mortar::lanes::Mask fits = r.elastic && magnitude(r.energy) <= most;
+    for (int i = 0; i < 3; ++i) fits = fits && magnitude(r.separation[i]) <= most && magnitude(r.traction[i]) <= most;
+    return fits;
+  }
+}
+
 template <class Real>
 unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const {
   namespace slot = mortar::slot;
@@ -78,9 +103,10 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
   for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y, rules);
   y.candidate = lane_candidates(y, rules);
   const mortar::lanes::ElasticLaneResult r = mortar::lanes::elastic_increment_lanes(setup.model, y);
+  const mortar::lanes::Mask take = fits_in_real(r);
   unsigned done = 0;
   for (int l = 0; l < kWidth; ++l) {
-    if (!r.elastic[l]) continue;
+    if (!take[l]) continue;
     Real* st = state_of(k + l);
     // The end state as store_elastic reads it: the separation booked, the
     // tangential plastic and crack components as they are (no turn), the
@@ -93,7 +119,7 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
     Real out[4];
     abaqus_stress(setup, mortar::Vec3(r.traction[0][l], r.traction[1][l], r.traction[2][l]), out);
     out[3] = Real(r.energy[l]);
-    if (!storage.store_elastic(s, false, false, out, st)) continue;  // integrate_point rejects it
+    storage.store_elastic_lane(s, out, st);
     write_stress(k + l, out);
     write_energies(k + l, double(out[3]), 0.0);  // spd: no dissipation
     done |= 1u << l;

@@ -124,6 +124,23 @@ struct StateStorage {
     return true;
   }
 
+  // store_elastic() for a point of the elastic lanes (ExplicitBlock::
+  // elastic_lanes): not turned, every float pair canonical, and every value
+  // it converts to Real, the `outputs` included, known to fit (the lanes
+  // test them in double, both points at once: ExplicitBlock::fits_in_real).
+  // Nothing is left to test: in single precision store_elastic_pairs' test of
+  // the floats is not repeated point by point.
+  void store_elastic_lane(const mortar::State& s, const Real (&outputs)[4], Real* st) const {
+    if constexpr (kSingle) {  // the lanes take float pairs only
+      float sep[6];
+      separation_pairs(s, sep);
+      store_separation_pairs(sep, st);
+      store_counts(s, st);
+    } else {
+      store_elastic(s, false, false, outputs, st);  // tests nothing in double
+    }
+  }
+
   void store(const mortar::State& s, Real* st) const {
     if constexpr (kSingle) {
       if (pairs) return mortar::store_state_pairs(s, st);
@@ -162,7 +179,7 @@ struct StateStorage {
     // outputs (12 values: three vectors for the test); after a turn the
     // plastic pairs and the crack components.
     float sep[6], tan[6];
-    for (int i = 0; i < 3; ++i) mortar::pair_of(s.separation[i], sep[i], sep[3 + i]);
+    separation_pairs(s, sep);
     const float tested[12] = {sep[0],     sep[1],     sep[2],     sep[3],     sep[4],     sep[5],
                               st[slot::reference_penetration], outputs[0], outputs[1], outputs[2], outputs[3], 0};
     if (!mortar::all_finite_values(tested)) return false;
@@ -173,10 +190,7 @@ struct StateStorage {
       tan[5] = float(s.crack[2]);
       if (!mortar::all_finite(tan, 6)) return false;
     }
-    for (int i = 0; i < 3; ++i) {
-      st[slot::separation_n + i] = sep[i];
-      st[low::separation_n + i] = sep[3 + i];
-    }
+    store_separation_pairs(sep, st);
     if (turned) {
       st[slot::plastic_s1] = tan[0];
       st[slot::plastic_s2] = tan[1];
@@ -187,6 +201,18 @@ struct StateStorage {
     }
     store_counts(s, st);
     return true;
+  }
+
+  // The separation's float pairs: high parts in sep[0..2], low parts in
+  // sep[3..5].
+  static void separation_pairs(const mortar::State& s, float (&sep)[6]) {
+    for (int i = 0; i < 3; ++i) mortar::pair_of(s.separation[i], sep[i], sep[3 + i]);
+  }
+  static void store_separation_pairs(const float (&sep)[6], float* st) {
+    for (int i = 0; i < 3; ++i) {
+      st[mortar::slot::separation_n + i] = sep[i];
+      st[mortar::low_slot::separation_n + i] = sep[3 + i];
+    }
   }
 
   static void store_counts(const mortar::State& s, Real* st) {
