@@ -1,5 +1,6 @@
 #include "bench/throughput.hpp"
 
+#include <alloca.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -51,9 +52,8 @@ constexpr double kResidualSlip = 1.0;    // mm: s about 2e-9, tan(phi) within 0.
 // the arrays the routine reads (penetration, drDisp, dRot, the state as far
 // as the routine's layout goes, sed) and writes the ones it writes (state,
 // stress, the energies, the fluxes); the state goes through a local copy the
-// compiler must keep, as the routine's does. That copy lies kShift bytes into
-// a stack area (Cases::time, kCopyPlacements).
-template <class Real, int kShift>
+// compiler must keep, as the routine's does.
+template <class Real>
 void copy_pass(Real* stress, Real* flux_slv, Real* flux_mst, Real* state, Real* sed, Real* sfd, Real* scd, Real* spd,
                Real* svd, const int* n_block, const int*, const int*, const int*, const int*, const int*,
                const int* n_dir, const int* n_states, const int*, const int*, const int*, const int*, const Real*,
@@ -64,8 +64,7 @@ void copy_pass(Real* stress, Real* flux_slv, Real* flux_mst, Real* state, Real* 
   const int nd = *n_dir, ns = *n_states;
   const int used = std::min(ns, sizeof(Real) == 4 ? kPairedStateCount : kStateCount);
   for (int k = 0; k < *n_block; ++k) {
-    Real area[kShift / sizeof(Real) + kPairedStateCount];
-    Real* const local = area + kShift / sizeof(Real);
+    Real local[kPairedStateCount];
     Real* st = state + long(k) * ns;
     std::copy(st, st + used, local);
     const Real* dd = dr_disp + long(k) * nd;
@@ -81,17 +80,16 @@ void copy_pass(Real* stress, Real* flux_slv, Real* flux_mst, Real* state, Real* 
   }
 }
 
-// The copy pass's local copy at four places a quarter of a page apart. At
-// some places on the stack (about one in 25, measured by shifting it in
-// steps of 16 bytes) it shares its offset within a 4 KiB page with the
-// arrays the pass streams through, and a load then waits on a store to the
-// other address (4K aliasing): the pass took 1.5-2.5 x its time, in every
-// sample of a run whose stack started there (docs/bench/throughput.md).
-// The copy pass is timed at each place and the fastest is its sample: the
-// limit it stands for is the fastest pass over the arrays.
-template <class Real>
-constexpr VuinteractionRoutine<Real> kCopyPlacements[] = {&copy_pass<Real, 0>, &copy_pass<Real, 1024>,
-                                                          &copy_pass<Real, 2048>, &copy_pass<Real, 3072>};
+// Where the frames of the timed loop start on the stack, in bytes below
+// where they would. At some places of the main thread's stack (which ASLR
+// moves from run to run in steps of 16 bytes, the arrays only in whole
+// pages) what the loop keeps on the stack shares its offset within a 4 KiB
+// page with the arrays it streams through, and a load waits on a store to
+// the other address (4K aliasing): the copy pass took 1.5-2.5 x its time
+// in every sample of such a run (docs/bench/throughput.md). The copy pass
+// is timed from four places a quarter of a page apart and the fastest is its
+// sample: the limit it stands for is the fastest pass over the arrays.
+constexpr int kCopyPlacements[] = {0, 1024, 2048, 3072};
 
 // One precision's points: the arrays, the routine, and the start state of
 // each workload (one point driven there, then copied to every point).
@@ -116,10 +114,9 @@ class Cases {
   // own contiguous share of the blocks), from the workload's start state;
   // the copy pass's the fastest of its placements.
   double time(Workload w, long points, int threads, long increments) {
-    if (w != Workload::copy) return time_once(w, points, threads, increments);
+    if (w != Workload::copy) return time_once(w, points, threads, increments, 0);
     double fastest = 1e300;
-    for (copy_placement_ = 0; copy_placement_ < int(std::size(kCopyPlacements<Real>)); ++copy_placement_)
-      fastest = std::min(fastest, time_once(w, points, threads, increments));
+    for (const int shift : kCopyPlacements) fastest = std::min(fastest, time_once(w, points, threads, increments, shift));
     return fastest;
   }
 
@@ -129,18 +126,18 @@ class Cases {
   static long capacity(long points) { return points + 2 * kThreadGap; }
 
  private:
-  double time_once(Workload w, long points, int threads, long increments) {
+  double time_once(Workload w, long points, int threads, long increments, int shift) {
     const std::vector<Range> shares = ranges(points, threads);
     for (const Range& r : shares) restore(w, r);
     const bool plastic = w == Workload::softening || w == Workload::sliding;
     // By value, and copied into each thread: the loop reads its bounds again
     // after every call of the (opaque) routine, and should not read them
-    // from a line of the first thread's stack.
-    auto work = [this, w, plastic, increments](Range r) {
-      for (long i = 0; i < increments; ++i) {
-        const int variant = plastic ? 0 : int(i % 2);
-        for (long b = r.first; b < r.last; b += kBlock) call(w, b, int(std::min<long>(kBlock, r.last - b)), variant);
-      }
+    // from a line of the first thread's stack. Its frames start `shift`
+    // bytes further down that thread's stack (kCopyPlacements).
+    auto work = [this, w, plastic, increments, shift](Range r) {
+      volatile char* below = static_cast<volatile char*>(alloca(std::size_t(shift) + 1));
+      below[0] = 0;
+      run_share(w, plastic, increments, r);
     };
     // The clock starts when every thread is running: a thread just created
     // may wait for its CPU to be woken and scheduled, which an analysis's
@@ -182,7 +179,7 @@ class Cases {
 
   void call(Workload w, long first, int count, int variant) {
     if (w == Workload::copy) {
-      a_.call(kCopyPlacements<Real>[copy_placement_], first, count, variant);
+      a_.call(&copy_pass<Real>, first, count, variant);
     } else {
       a_.call(routine_, first, count, variant);
     }
@@ -208,6 +205,15 @@ class Cases {
       r.push_back({first + t * kThreadGap, last + t * kThreadGap});
     }
     return r;
+  }
+
+  // The timed loop over one thread's share, out of line so that its frame
+  // lies below the caller's alloca (time_once).
+  __attribute__((noinline)) void run_share(Workload w, bool plastic, long increments, Range r) {
+    for (long i = 0; i < increments; ++i) {
+      const int variant = plastic ? 0 : int(i % 2);
+      for (long b = r.first; b < r.last; b += kBlock) call(w, b, int(std::min<long>(kBlock, r.last - b)), variant);
+    }
   }
 
   struct Start {
@@ -261,7 +267,6 @@ class Cases {
   std::vector<double> props_;
   PointArrays<Real> a_;
   Start start_[4];
-  int copy_placement_ = 0;  // into kCopyPlacements, while the copy pass is timed
 };
 
 double median(std::vector<double> v) {
