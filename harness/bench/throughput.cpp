@@ -1,13 +1,12 @@
 #include "bench/throughput.hpp"
 
-#include <alloca.h>
 #include <algorithm>
+#include <alloca.h>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <iomanip>
-#include <iterator>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
