@@ -24,7 +24,7 @@ enum : int {
   open,                                   // 15    1 open (h = 1), 0 closed
   dissipation_plastic,                    // 16    sum sigma . d(delta_p)           [N/mm]
   dissipation_damage,                     // 17    sum 1/2 h k (delta_e)^2 dd       [N/mm]
-  energy_unilateral,                      // 18    elastic energy lost at regime switches [N/mm]
+  energy_unilateral,                      // 18    elastic energy released at regime switches, >= 0 [N/mm]
   substeps_accepted,                      // 19    last increment
   substeps_rejected,                      // 20    last increment
   status,                                 // 21    last increment: 0 ok, else Failure code

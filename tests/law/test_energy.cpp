@@ -25,6 +25,22 @@ void check_closure(const SchemeUnderTest& S, const char* path, const Model& M, c
   CAPTURE(S.name, path);
   CHECK(error < S.closure);
 }
+// DisplacementDriver::ramp, except that an increment in which the law drops at
+// fixed separation (a snap-back of a brittle set, docs/model.md 6: status
+// relaxations > 0) is taken as 1000 calls. The trapezoid over one increment
+// cannot see where inside it the traction dropped; the finer cut can, and the
+// law's answer does not depend on the cut.
+void ramp_resolving_drops(const Model& M, DisplacementDriver& drive, const Vec3& total, int count) {
+  const Vec3 d = total / count;
+  for (int i = 0; i < count; ++i) {
+    State probe = drive.state();
+    if (integrate_increment(M, probe, d).status.relaxations == 0) {
+      drive.step(d);
+      continue;
+    }
+    for (int k = 0; k < 1000; ++k) drive.step(d / 1000);
+  }
+}
 }  // namespace
 
 TEST_CASE("Invariant 7: energy closes on pure opening", "[invariant7]") {
@@ -48,10 +64,10 @@ TEST_CASE("Invariant 7: energy closes through opening, shear and closing", "[inv
   const SchemeUnderTest S = GENERATE(from_range(all_schemes()));
   const Model M = model_with(almeida_m34(), S.scheme, S.closure_stol);
   DisplacementDriver drive(M);
-  drive.ramp(Vec3(0.002, 0.004, 0), 2000);   // mixed-mode opening
-  drive.ramp(Vec3(0.0, 0.01, 0.005), 2000);  // slide while open
-  drive.ramp(Vec3(-0.004, 0, 0), 2000);      // close: shear stiffness comes back
-  drive.ramp(Vec3(0, -0.03, 0), 3000);       // slide back under compression
+  ramp_resolving_drops(M, drive, Vec3(0.002, 0.004, 0), 2000);   // mixed-mode opening
+  ramp_resolving_drops(M, drive, Vec3(0.0, 0.01, 0.005), 2000);  // slide while open
+  ramp_resolving_drops(M, drive, Vec3(-0.004, 0, 0), 2000);      // close, keeping the traction
+  ramp_resolving_drops(M, drive, Vec3(0, -0.03, 0), 3000);       // slide back: M34 snaps back
   const State& s = drive.state();
   CAPTURE(s.energy_unilateral, s.dissipation_plastic, s.dissipation_damage);
   check_closure(S, "opening, sliding, closing", M, drive.curve());

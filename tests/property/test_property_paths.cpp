@@ -31,7 +31,7 @@ namespace {
 
 struct Tally {
   long paths = 0, increments = 0, rejected = 0, rejected_changed = 0, non_finite = 0, damage_out_of_range = 0,
-       damage_decreased = 0, off_surface = 0;
+       damage_decreased = 0, unilateral_decreased = 0, off_surface = 0;
   double worst_yield_ratio = -1e300;  // max over increments of F / yield_tolerance
   std::vector<double> closure;        // per path: |W_ext - booked| / sum |dW_ext|
   std::vector<double> vs_bound;       // per path: |W_ext - booked| / trapezoid error bound
@@ -92,6 +92,10 @@ void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int 
       const mortar::State s = law_state(b, k);
       if (!(s.dn >= 0 && s.dn <= 1 && s.ds >= 0 && s.ds <= 1)) ++t.damage_out_of_range;
       if (s.dn < state_old[k].dn || s.ds < state_old[k].ds) ++t.damage_decreased;
+      // A regime switch only releases elastic energy (docs/model.md 6, closure
+      // without created energy): SDV 18 starts at 0 and never decreases.
+      if (!(s.energy_unilateral >= state_old[k].energy_unilateral && s.energy_unilateral >= 0))
+        ++t.unilateral_decreased;
       const mortar::Vec3 sigma = law_traction(b, k);
       // Forward Euler has no drift correction: it may end outside (the
       // bench's stability map measures by how much). Single precision: the
@@ -130,9 +134,10 @@ double quantile(std::vector<double> v, double q) {
 void print(const char* what, const Tally& t) {
   std::printf(
       "%s: %ld paths, %ld point-increments; rejected and reported %ld, non-finite %ld, damage outside [0,1] %ld, "
-      "damage decreased %ld, off the surface %ld (worst F/FTOL %s); closure |W-booked|/sum|dW|: median %.2g, "
-      "90%% %.2g, max %.2g; /trapezoid bound: max %.2f\n",
+      "damage decreased %ld, unilateral energy decreased %ld, off the surface %ld (worst F/FTOL %s); "
+      "closure |W-booked|/sum|dW|: median %.2g, 90%% %.2g, max %.2g; /trapezoid bound: max %.2f\n",
       what, t.paths, t.increments, t.rejected, t.non_finite, t.damage_out_of_range, t.damage_decreased,
+      t.unilateral_decreased,
       t.off_surface, t.worst_yield_ratio > -1e300 ? std::to_string(t.worst_yield_ratio).c_str() : "n/a",
       quantile(t.closure, 0.5), quantile(t.closure, 0.9), quantile(t.closure, 1.0), quantile(t.vs_bound, 1.0));
 }
@@ -149,6 +154,7 @@ void check_properties(const Tally& t, int sets, bool rejections_allowed, mortar:
   CHECK(t.non_finite == 0);
   CHECK(t.damage_out_of_range == 0);
   CHECK(t.damage_decreased == 0);
+  CHECK(t.unilateral_decreased == 0);
   if (scheme != mortar::Scheme::forward_euler) CHECK(t.off_surface == 0);
 }
 

@@ -137,15 +137,16 @@ double IncrementIntegration::refine_intersection(double a, double frac, const Ve
   return a;
 }
 
-// Switch of the unilateral regime at the current separation (Eq. 13): the
-// stiffness jumps, the traction is re-derived from Eq. 1, the elastic energy
-// that the jump removes (opening) or adds (closing) is booked, and a closing
-// that lands outside the surface returns to it at fixed separation.
+// Switch of the unilateral regime at the current separation (Eq. 13). On
+// opening the stiffness falls to the secant and the traction with it; on
+// closing the secant's share of the elastic separation becomes plastic, so
+// the traction is continuous (docs/model.md 6, Decision - closure without
+// created energy). Either way the elastic energy can only fall; what it loses
+// is booked as unilateral energy. A point that lands outside the surface (a
+// start state already outside it) returns to it at fixed separation.
 bool IncrementIntegration::switch_regime() {
   tangent_.forget(st_);
-  const double before = elastic_energy(M_, P_.y);
-  P_.y.open = !P_.y.open;
-  P_.y.energy_unilateral += before - elastic_energy(M_, P_.y);
+  P_.y.energy_unilateral += switch_unilateral_regime(M_, P_.y);
   ++st_.regime_switches;
   disintegrate_if_no_strength(M_, P_.y);
   P_.sigma = traction_of(M_, P_.y);

@@ -73,6 +73,16 @@ void disintegrate_if_no_strength(const Model& M, State& y);
 // dn = 1, the elastic energy of the normal released as damage dissipation.
 void complete_normal_damage(const Model& M, State& y);
 
+// The switch of the unilateral regime at the current separation (Eq. 13;
+// docs/model.md 6, Correction - closure without created energy). Closing,
+// the part d o delta_e of the elastic separation that the damaged secant does
+// not carry becomes plastic (taken from the crack separation, so delta_in is
+// unchanged) and the full stiffness gives the same traction,
+// kbar (1 - d) delta_e; opening, the stiffness falls to the secant. Returns
+// the elastic energy released: 1/2 kbar d (1 - d) delta_e^2 closing,
+// 1/2 kbar d delta_e^2 opening, in closed form so that it is never negative.
+double switch_unilateral_regime(const Model& M, State& y);
+
 // Which components of an open joint are on their damage-growing branch in a
 // substep (docs/model.md 6, Decision - open-regime branches); a component on
 // its frozen secant keeps its damage exactly.
