@@ -26,7 +26,7 @@ void complete_normal_damage(const Model& M, State& y) {
 double switch_unilateral_regime(const Model& M, State& y) {
   const Vec3 d(y.dn, y.ds, y.ds);
   const Vec3 e = y.elastic_separation();
-  const Vec3 kept = y.open ? Vec3::Ones() - d : Vec3::Ones();
+  const Vec3 kept = y.open ? Vec3(Vec3::Ones() - d) : Vec3(Vec3::Ones());
   const double released = 0.5 * secant_stiffness(M, 0, 0, false).cwiseProduct(d).cwiseProduct(kept).dot(e.cwiseProduct(e));
   if (y.open) {
     const Vec3 locked = d.cwiseProduct(e);
