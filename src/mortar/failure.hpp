@@ -8,9 +8,9 @@ namespace mortar {
 
 enum class Failure : int {
   none = 0,
-  too_many_substeps = 1,     // substeps + relaxation steps exceeded Controls::max_substeps
+  too_many_substeps = 1,     // substeps + relaxation steps (or segment restarts) exceeded Controls::max_substeps
   relaxation_failed = 2,     // return at fixed separation found no surface point
-  too_many_switches = 3,     // more open/closed switches in one increment than allowed
+  too_many_switches = 3,     // more open/closed switches (regime segments) in one increment than allowed
   non_finite_increment = 4,  // the separation increment holds NaN or infinity
   invalid_state = 5,         // the incoming state breaks a rule (see check_state)
   non_finite_result = 6,     // a result (traction, energy, state) beyond the floating-point range: start state kept

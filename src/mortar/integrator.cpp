@@ -26,10 +26,13 @@ const char* check_state(const State& s) {
   return nullptr;
 }
 
-Mat3 continuum_tangent(const Model& M, const State& y, const Vec3& sigma) {
+Mat3 continuum_tangent(const Model& M, const State& y, const Vec3& sigma, const Vec3& dd) {
   const Vec3 K = secant_stiffness(M, y.dn, y.ds, y.open);
   const Surface S = surface_of(M, y);
-  const RateStiffness k = rate_stiffness(M, y);
+  // The stiffness of the rate statement over dd, as the stages and the
+  // implicit step take it: a closing of the elastic opening on the normal
+  // secant (docs/model.md 6, Decision - closing on the tension cap).
+  const RateStiffness k = rate_stiffness_over(M, y, dd);
   const Flow f = flow_of(M, sigma, S, k.on_flow);
   if (yield_function(sigma, S) < -yield_tolerance(M, sigma) || !(f.denominator > 0)) return K.asDiagonal();
   // Eq. 20: dsigma = kS (dd - m dl), dl = dF . kS dd / denominator.
@@ -109,7 +112,9 @@ void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, 
       *tangent = sensitivity.sigma;
       st.tangent_approximate = tracker.lost;
     } else {
-      *tangent = increment.ended_plastic() ? continuum_tangent(M, P.y, P.sigma)
+      // The last piece of d has d's direction: the tangent of increments that
+      // go on the same way.
+      *tangent = increment.ended_plastic() ? continuum_tangent(M, P.y, P.sigma, d)
                                            : Mat3(secant_stiffness(M, P.y.dn, P.y.ds, P.y.open).asDiagonal());
       st.tangent_approximate = increment.ended_plastic();
     }

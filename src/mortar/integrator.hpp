@@ -81,8 +81,12 @@ IncrementResult integrate_increment(const Model& model, State& state, const Vec3
 IncrementResult integrate_declined_increment(const Model& model, State& state, const Vec3& d_separation);
 
 // The continuum (rate) tangent of Eq. 20 at a state and its traction, on the
-// damage-growing branch: kS - (kF o m)(dF o kS)^T / denominator when the
-// point is on the surface and the denominator is positive, else K(d, h).
-Mat3 continuum_tangent(const Model& model, const State& state, const Vec3& traction);
+// damage-growing branch, for separation increments in the direction of dd:
+// kS - (kF o m)(dF o kS)^T / denominator when the point is on the surface and
+// the denominator is positive, else K(d, h). kS and kF are the rate
+// stiffnesses over dd (rate_stiffness_over): an open joint closed against its
+// elastic opening (dd_n < 0, delta_e_n > 0) takes the closing on the normal
+// secant kn (1 - dn) (docs/model.md 6, Decision - closing on the tension cap).
+Mat3 continuum_tangent(const Model& model, const State& state, const Vec3& traction, const Vec3& dd);
 
 }  // namespace mortar

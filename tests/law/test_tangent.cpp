@@ -3,12 +3,14 @@
 // the whole update (integrate_increment from a copied state, perturbed
 // increment), the secant on elastic increments, and the flag where it is not
 // exact. Its observed order is in test_convergence.cpp; the invariants of
-// docs/model.md 10 run it with the other schemes.
+// docs/model.md 10 run it with the other schemes. The explicit schemes'
+// continuum tangent (Eq. 20) against the rate statement it linearises.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
 #include <vector>
 
+#include "mortar/integration/rate_statement.hpp"
 #include "mortar/integrator.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
@@ -130,4 +132,67 @@ TEST_CASE("Implicit: a tangent across a regime switch with plastic flow is flagg
   CHECK(r.status.regime_switches > 0);
   CHECK(r.status.tangent_approximate);
   CHECK(T.allFinite());
+}
+
+TEST_CASE("Explicit: the continuum tangent after closing an open joint unloads the closing on the normal secant",
+          "[tangent][closing]") {
+  // An open, damaged, softening joint closed against its elastic opening
+  // while it slides (docs/model.md 6, Decision - closing on the tension cap):
+  // the rate statement takes the closing on kn (1 - dn) (rate_stiffness_over),
+  // and the continuum tangent after such an increment must be the derivative
+  // of that rate statement for increments in the same direction.
+  for (const Scheme scheme : {Scheme::modified_euler, Scheme::forward_euler}) {
+    const Model M = model_with(almeida_m15(), scheme);
+    State start;
+    integrate_increment(M, start, Vec3(0.004, 0, 0));
+    integrate_increment(M, start, Vec3(0, 2e-3, 0));
+    for (const Vec3& d : {Vec3(-5e-5, 2e-4, 0), Vec3(-5e-5, 2e-4, 1e-4)}) {
+      State s = start;
+      Mat3 T;
+      const IncrementResult r = integrate_increment(M, s, d, &T);
+      CAPTURE(scheme_name(scheme), d.transpose());
+      REQUIRE(r.status.ok());
+      REQUIRE(r.status.plastic);
+      REQUIRE(r.status.regime_switches == 0);
+      REQUIRE(s.open);
+      REQUIRE(s.elastic_separation()[0] > 0);
+      REQUIRE(s.dn > 0.5);
+      CHECK(r.status.tangent_approximate);
+      const Point P{s, r.traction};
+      const Vec3 u = d.normalized();
+      REQUIRE(stage(M, P, u).plastic);
+      REQUIRE((stage(M, P, u).grow.normal && stage(M, P, u).grow.shear));
+      // The rate statement is homogeneous of degree 1 in the increment and
+      // linear inside the cone of closing increments on these branches:
+      // central differences about the increment's direction give its matrix.
+      Mat3 R;
+      const double eps = 1e-3;
+      for (int j = 0; j < 3; ++j) {
+        Vec3 up = u, um = u;
+        up[j] += eps;
+        um[j] -= eps;
+        R.col(j) = (stage(M, P, up).dsigma - stage(M, P, um).dsigma) / (2 * eps);
+      }
+      // The continuum tangent of the same point for an opening increment takes
+      // the separation on kn: on closing, its normal column scales by (1 - dn),
+      // the shear columns stay.
+      Vec3 opening = d;
+      opening[0] = -d[0];
+      const Mat3 T_open = continuum_tangent(M, s, r.traction, opening);
+      // The whole update continued a little further in the same direction.
+      const double h = 1e-8;
+      State c = s;
+      const Vec3 rate = (integrate_increment(M, c, h * u).traction - r.traction) / h;
+      const double rate_error = (T * u - rate).norm() / rate.norm();
+      const double matrix_error = (T - R).norm() / R.norm();
+      CAPTURE(T, R, T_open, rate.transpose(), (T * u).transpose());
+      std::printf("[tangent] closing, %s, d = (%g, %g, %g): T_nn %.6g (rate statement %.6g, opening %.6g), "
+                  "|T - R|/|R| %.2e, |T u - rate|/|rate| %.2e\n",
+                  scheme_name(scheme), d[0], d[1], d[2], T(0, 0), R(0, 0), T_open(0, 0), matrix_error, rate_error);
+      CHECK(matrix_error < 1e-8);
+      CHECK(rate_error < 1e-4);
+      CHECK((T.col(0) - (1 - s.dn) * T_open.col(0)).norm() <= 1e-12 * T_open.norm());
+      CHECK((T.rightCols<2>() - T_open.rightCols<2>()).norm() <= 1e-12 * T_open.norm());
+    }
+  }
 }

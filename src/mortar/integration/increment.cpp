@@ -8,19 +8,17 @@
 
 namespace mortar {
 
-namespace {
-constexpr int kMaxSegments = 32;  // docs/model.md 9, code 3
-}  // namespace
-
 Failure IncrementIntegration::run(const Vec3& d) {
   double left = 1;  // fraction of d still to integrate
-  for (int seg = 0; left > 1e-15; ++seg) {
-    if (seg >= kMaxSegments) return Failure::too_many_switches;
+  SegmentCount count;
+  while (left > 1e-15) {
+    if (const Failure f = count.check(M_.controls); f != Failure::none) return f;
     const double e_n = P_.y.elastic_separation()[0];
     const double eps = boundary_eps(M_, P_.y);
     // Regime flag inconsistent with the sign of delta_e_n (beyond round-off):
     // switch before integrating.
     if ((P_.y.open && e_n < -eps) || (!P_.y.open && e_n > eps)) {
+      ++count.switches;
       if (!switch_regime()) return Failure::relaxation_failed;
       continue;
     }
@@ -35,7 +33,12 @@ Failure IncrementIntegration::run(const Vec3& d) {
     const double done = segment(rest, frac, boundary);
     if (!st_.ok()) return st_.failure;
     left *= 1 - done;
-    if (at_boundary_ && !switch_regime()) return Failure::relaxation_failed;
+    if (!at_boundary_) {
+      ++count.restarts;  // a restart, unless nothing is left (the loop then ends)
+      continue;
+    }
+    ++count.switches;
+    if (!switch_regime()) return Failure::relaxation_failed;
   }
   return Failure::none;
 }

@@ -9,6 +9,26 @@
 
 namespace mortar {
 
+constexpr int kMaxSegments = 32;  // regime segments in one increment (docs/model.md 9, code 3)
+
+// What the loop of one increment's segments has done so far, and the bound it
+// has reached (docs/model.md 9). A segment ends on a regime switch, or is
+// restarted in the same regime where the substepper hands the rest back (the
+// point left the surface, the normal completed, the joint separated). Only
+// the switches make regime segments (code 3). A restart follows at least one
+// accepted substep, so the substep budget bounds the restarts (code 1); the
+// count is the guard that the loop ends even where a restart would not.
+struct SegmentCount {
+  int switches = 0;
+  long restarts = 0;
+  // Before the next segment: Failure::none, or why the loop stops.
+  Failure check(const Controls& c) const {
+    if (switches >= kMaxSegments) return Failure::too_many_switches;
+    if (restarts > c.max_substeps) return Failure::too_many_substeps;
+    return Failure::none;
+  }
+};
+
 class IncrementIntegration {
  public:
   IncrementIntegration(const Model& M, Point& P, IntegrationStatus& st, TangentTracker& tangent,

@@ -15,10 +15,14 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   const Controls& c = M.controls;
   at_ = at;
   at_boundary_ = false;
+  // Every bracket starts closed: one left open by the run before (stopped
+  // inside it) would cut this run's substeps towards another point's sizes.
   cut_ = CrossingBracket{};
   cuts_ = 0;
   sep_cut_ = CrossingBracket{};
   sep_cuts_ = 0;
+  dn_cut_ = CrossingBracket{};
+  dn_cuts_ = 0;
   double T = 0, dT = 1;
   bool unloaded = false;
   // Every pass of the loop counts against the budget, so no path through

@@ -2,8 +2,10 @@
 // (docs/model.md 7.1, 7.2, 7.5): the substep budget, the return at fixed
 // separation where the rate statement has no strain-driven solution, the
 // regime-crossing bracket that ends a substep on the boundary delta_e_n = 0
-// (6), the separation bracket that ends it on s = kSeparated (6), settle()
-// and the step-size control, which the scheme (scheme.hpp) steers.
+// (6), the separation bracket that ends it on s = kSeparated (6), the
+// normal-completion bracket that ends it where dn = 1 (6), settle() and the
+// step-size control, which the scheme (scheme.hpp) steers. Each run() starts
+// with every bracket closed.
 #pragma once
 
 #include <algorithm>
