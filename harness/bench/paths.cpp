@@ -155,8 +155,10 @@ void add_calibration_paths(const std::string& data_dir, bool quick, std::vector<
 // times with different amplitudes: the joint opens to well past complete
 // separation (15 to 40 softening lengths u = GIC/ft0; separation, s_raw <=
 // s_sep, comes after about 16: model.md 6, Decision -- complete separation),
-// closes to delta_n = 0 (contact is regained at delta_n = delta_p_n, about
-// 0.011 mm, so that is about 2.4 MPa of compression), and slides under that
+// closes to delta_n = 0 (contact is regained at delta_n = delta_p_n, the
+// largest opening over 1 + bn, about 0.027 mm: model.md 6, Decision --
+// opening past complete normal damage; so about 5.6 MPa of compression),
+// and slides under that
 // compression (slips of 0.04, -0.06 and 0.05 mm, past the elastic slip of
 // about 0.02 mm), then reopens to zero traction. Every closing must find the
 // same contact point however the path is cut into increments.

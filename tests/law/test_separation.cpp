@@ -39,16 +39,26 @@ TEST_CASE("Decision: an open joint separates completely at s_sep, and stays sepa
   // others land where their steps put them, within the same bracket).
   CHECK(surface_of(M, s).s_raw == Approx(kSeparated).epsilon(1e-6));
   CHECK(traction_of(M, s).norm() == 0);
-  // Open: sliding and further opening change nothing but the separation.
+  // Open: no traction and no work; sliding and closing change nothing but
+  // the separation, opening past the inelastic opening moves it with the
+  // opening, split as Eq. 17 splits it (6, Decision - opening past complete
+  // normal damage).
   const State before = s;
+  double reach = s.plastic[0] + s.crack[0];
   for (const Vec3& d : {Vec3(0.01, 0, 0), Vec3(0, 0.02, -0.01), Vec3(-0.005, -0.02, 0.01)}) {
+    const Vec3 dp_shear(0, s.plastic[1], s.plastic[2]), dcr_shear(0, s.crack[1], s.crack[2]);
     const IncrementResult r = integrate_increment(M, s, d);
     REQUIRE(r.status.ok());
+    reach = std::max(reach, s.separation[0]);
     CHECK(r.traction.norm() == 0);
-    CHECK(s.plastic == before.plastic);
-    CHECK(s.crack == before.crack);
+    CHECK(s.plastic[0] + s.crack[0] == Approx(reach).epsilon(1e-14));
+    CHECK(s.crack[0] == Approx(p.bn * s.plastic[0]).epsilon(1e-8));
+    CHECK(Vec3(0, s.plastic[1], s.plastic[2]) == dp_shear);
+    CHECK(Vec3(0, s.crack[1], s.crack[2]) == dcr_shear);
     CHECK(s.wI == before.wI);
     CHECK(s.wII == before.wII);
+    CHECK(s.dissipation_plastic == before.dissipation_plastic);
+    CHECK(s.dissipation_damage == before.dissipation_damage);
   }
   // Contact is regained where the normal separation reaches dp_n (no slip
   // left to jump back on closure, 6, Decision - closure jump).

@@ -46,7 +46,9 @@ inline ElasticLaneResult elastic_increment_lanes(const Model& M, const ElasticLa
   const D e_n = y.separation[0] - y.plastic[0];
   const D eps = 1e-12 * larger(larger(magnitude(y.separation[0]), magnitude(y.plastic[0])), M.separation_floor);
   const Mask open = y.h != 0.0;
-  Mask elastic = y.candidate && regime_kept(open, e_n, e_n + y.d[0], eps);
+  // An open joint with complete normal damage may move delta_p_n
+  // (follow_opening): left to the scalar shortcut, which reads delta_cr_n.
+  Mask elastic = y.candidate && !(open && y.dn >= 1.0) && regime_kept(open, e_n, e_n + y.d[0], eps);
 
   const D s_raw = 1.0 - y.wI / p.GIC - y.wII / p.GIIC;
   const D s = 0.0 < s_raw ? s_raw : D{};  // std::max(0.0, s_raw)

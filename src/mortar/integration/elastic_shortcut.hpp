@@ -64,6 +64,9 @@ auto inside_by_bounds(const Model& M, T alpha, T beta, Tt t, T s0, T s1, T s2) {
 inline bool certainly_elastic(const Model& M, const State& y, const Vec3& d) {
   const double e_n = y.separation[0] - y.plastic[0];
   if (!regime_kept(y.open, e_n, e_n + d[0], boundary_eps(M, y))) return false;
+  // Opening past the inelastic opening of a completed normal moves delta_p_n
+  // (follow_opening): the full path's, in its very arithmetic.
+  if (y.open && y.dn >= 1 && ((y.separation[0] + d[0]) - y.plastic[0]) - y.crack[0] > 0) return false;
 
   const Parameters& p = M.p;
   const double s = std::max(0.0, 1.0 - y.wI / p.GIC - y.wII / p.GIIC);

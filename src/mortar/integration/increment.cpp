@@ -71,6 +71,7 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   // loading from the surface).
   if (!(on_surface && loading) && F_at(frac) <= tol_at(frac)) {
     P_.y.separation += frac * rest;
+    follow_opening(M_, P_.y);
     P_.sigma = traction_of(M_, P_.y);
     if (tangent_) {
       tangent_.D->separation += frac * (Mat3::Identity() - tangent_.D->separation);

@@ -176,7 +176,7 @@ Substepper::Landing Substepper::normal_completion(const Point& N, const Surface&
   auto g = [&](const Point& X, const ShearRadius& r) {
     const double tau = r.tau, R = r.R;
     const double sliding = R > 0 ? tau / R : 0.0;
-    const double left = kSeparated * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
+    const double left = kNormalComplete * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
     return (X.sigma[0] - left) / M.stress_scale;
   };
   const double g0 = g(P, at_.radius);

@@ -21,6 +21,15 @@ void complete_normal_damage(const Model& M, State& y) {
   const double e = y.elastic_separation()[0];
   y.dissipation_damage += 0.5 * M.p.kn * (1 - y.dn) * e * e;
   y.dn = 1;
+  follow_opening(M, y);
+}
+
+void follow_opening(const Model& M, State& y) {
+  if (!y.open || y.dn < 1) return;
+  const double beyond = (y.separation[0] - y.plastic[0]) - y.crack[0];
+  if (!(beyond > 0)) return;
+  y.plastic[0] += beyond / (1 + M.p.bn);
+  y.crack[0] = y.separation[0] - y.plastic[0];
 }
 
 double switch_unilateral_regime(const Model& M, State& y) {
@@ -49,6 +58,7 @@ void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches
     y.dn = dn;
     y.ds = ds;
     disintegrate_if_no_strength(M, y);
+    follow_opening(M, y);
   }
   sigma = traction_of(M, y);
 }

@@ -50,10 +50,17 @@ inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, c
 // a well-conditioned point to land a substep on (relative change of s per
 // substep >> round-off). Its place carries the round-off of the summed works
 // (s = 1 - wI/GIC - wII/GIIC: about 1e-13 of wI after 1e5 substeps, amplified
-// by 1/s), and the plastic opening at which contact is regained grows by
-// u ln(10) per decade of s_sep, so s_sep is a model decision, not a tolerance
-// (docs/model.md 6).
+// by 1/s). Where contact is regained does not depend on it: opening past the
+// separation moves delta_p_n as the growing branch would (follow_opening;
+// the tolerance table of docs/model.md 6).
 constexpr double kSeparated = 1e-7;
+
+// The normal traction taken as none on the growing branch, relative to a
+// traction scale (Substepper::normal_completion; docs/model.md 6, Decision -
+// complete normal damage inside a substep). Like kSeparated, it sets no
+// answer at engineering scale (follow_opening; the tolerance table of
+// docs/model.md 6).
+constexpr double kNormalComplete = 1e-7;
 
 // Whether an open joint's strength s_raw has reached kSeparated (within the
 // relative round-off of the substep that lands on it, substepper.cpp).
@@ -62,9 +69,9 @@ inline bool separated(double s_raw) { return s_raw <= kSeparated * (1 + 2e-9); }
 // An open joint with no strength left (s_raw <= kSeparated) can only carry
 // zero traction: its surface is (within kSeparated ft0) the apex of the cone,
 // so the damage is complete (d = 1), which freezes its plastic and crack
-// separations while open (rate stiffness 0, docs/model.md 6) until contact at
-// delta_n = delta_p_n. The elastic energy this releases is booked as damage
-// dissipation.
+// slips while open (rate stiffness 0, docs/model.md 6); the normal ones
+// follow the opening (follow_opening) until contact at delta_n = delta_p_n.
+// The elastic energy this releases is booked as damage dissipation.
 void disintegrate_if_no_strength(const Model& M, State& y);
 
 // An open joint whose normal traction, falling on its damage-growing branch,
@@ -82,6 +89,15 @@ void complete_normal_damage(const Model& M, State& y);
 // the elastic energy released: 1/2 kbar d (1 - d) delta_e^2 closing,
 // 1/2 kbar d delta_e^2 opening, in closed form so that it is never negative.
 double switch_unilateral_regime(const Model& M, State& y);
+
+// An open joint whose normal damage is complete (dn = 1), opened past its
+// inelastic opening delta_in_n = delta_p_n + delta_cr_n: the limit dn -> 1 of
+// the growing branch (Eqs. 16-17 with sigma_n -> 0), which keeps
+// delta_in_n = delta_n, delta_p_n moving by 1/(1 + bn) of the opening and
+// delta_cr_n by bn/(1 + bn), at zero traction, so nothing is dissipated
+// (docs/model.md 6, Decision - opening past complete normal damage). Where
+// the normal completed then does not set where contact is regained.
+void follow_opening(const Model& M, State& y);
 
 // Which components of an open joint are on their damage-growing branch in a
 // substep (docs/model.md 6, Decision - open-regime branches); a component on

@@ -330,7 +330,7 @@ TEST_CASE("rocking: three times separated, closed into compression and slid", "[
   for (int k = 0; k < 3; ++k) {
     CAPTURE(k, c[3 * k].transpose(), c[3 * k + 1].transpose(), c[3 * k + 2].transpose());
     CHECK(c[3 * k].norm() == 0);  // opened past complete separation: no traction at all
-    CHECK(c[3 * k + 1][0] < -2);  // closed: about 2.4 MPa of compression
+    CHECK(c[3 * k + 1][0] < -2);  // closed: about 5.6 MPa of compression (model.md 6)
     CHECK(c[3 * k + 2][0] < -2);
     CHECK(std::abs(c[3 * k + 2][1]) > 1);  // sliding on the friction left
   }
