@@ -10,6 +10,7 @@
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
 #include "output/csv.hpp"
+#include "output/flag_tally.hpp"
 #include "output/progress.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/explicit_run.hpp"
@@ -68,7 +69,7 @@ std::string describe(const ResidualSequence& r) {
   return s + ", " + std::to_string(r.count) + " iteration(s): " + format_residuals(r);
 }
 
-void summary(const RunArgs& a, const ImplicitStatistics& st, std::ostream& err) {
+void summary(const RunArgs& a, const ImplicitStatistics& st, const FlagTally& flags, std::ostream& err) {
   err << "run (implicit, UINTER): " << st.increments << " increments, " << st.attempts << " attempts ("
       << st.cuts_by_routine << " cut back on PNEWDT, " << st.diverged << " diverged, " << st.not_converged
       << " not converged, " << st.cycling << " cycling): " << st.calls << " calls of uinter_ in " << st.seconds
@@ -77,6 +78,7 @@ void summary(const RunArgs& a, const ImplicitStatistics& st, std::ostream& err) 
       << "; largest controlled-traction residual " << st.max_traction_residual << " MPa (tolerance "
       << a.traction_tol << " MPa)\n";
   if (st.has_worst) err << "run: most iterations: " << describe(st.worst) << "\n";
+  err << "run: " << flags.summary() << "\n";
   err << "run: wrote " << a.out << "\n";
 }
 
@@ -128,15 +130,20 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
   ResidualSink residuals;
   if (a.print_residuals) residuals = [&](const ResidualSequence& r) { err << "residuals: " << describe(r) << "\n"; };
   ImplicitStatistics stats;
+  FlagTally flags;
   const bool completed = output.complete(
       [&] {
         stats = run_scene_implicit(
-            params.values, scene, settings, [&](int, const Sample& s) { output.write(s); }, output.progress(),
-            residuals);
+            params.values, scene, settings,
+            [&](int point, const Sample& s) {
+              flags.add(point, s.integration_flags);
+              output.write(s);
+            },
+            output.progress(), residuals);
       },
       err);
   if (!completed) return 1;
-  if (!a.quiet) summary(a, stats, err);
+  if (!a.quiet) summary(a, stats, flags, err);
   return 0;
 }
 
@@ -165,11 +172,13 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
   Sample first;
   double worst = 0;
   RunStatistics stats;
+  FlagTally flags;
   const bool completed = output.complete(
       [&] {
         stats = run_scene(
             params.values, scene, settings,
             [&](int point, const Sample& s) {
+              flags.add(point, s.integration_flags);
               if (point == 0) {
                 first = s;
                 output.write(s);
@@ -188,6 +197,7 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
         << "; largest controlled-traction residual " << stats.max_traction_residual << " MPa (tolerance "
         << a.traction_tol << " MPa)\n";
     if (a.points > 1) err << "run: largest difference of any point from point 1: " << worst << "\n";
+    err << "run: " << flags.summary() << "\n";
     err << "run: wrote " << a.out << "\n";
   }
   if (worst != 0) {

@@ -10,6 +10,7 @@
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
+#include "output/flag_tally.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
 #include "solvers/explicit_run.hpp"
@@ -70,9 +71,12 @@ class Validation {
     outcome.rows.push_back(regression_row(spec, curve, passed(outcome)));
     if (fs::exists(spec.experimental_file))
       outcome.rows.push_back(compare_with_experiment(series.kind, curve, read_csv(spec.experimental_file)));
-    if (!o_.quiet)
+    if (!o_.quiet) {
+      FlagTally flags;
+      for (const Sample& s : curve) flags.add(0, s.integration_flags);
       err_ << "validate: " << spec.name << ": " << curve.size() - 1 << " increments in "
-           << format_number(outcome.seconds, 3) << " s\n";
+           << format_number(outcome.seconds, 3) << " s; " << flags.summary() << "\n";
+    }
     return outcome;
   }
 

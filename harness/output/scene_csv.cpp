@@ -95,7 +95,8 @@ std::string scene_summary(const SceneSpec& spec, const WallModel& m, const WallR
     << "), kinetic " << e.kinetic << ", damping " << e.damping << "\n"
     << "energy balance error: " << balance << " of the external work at the end, at most " << r.max_balance_error
     << " of the largest external work so far in the displacement stage\n"
-    << "kinetic / internal energy in the displacement stage: at most " << r.max_kinetic_ratio << "\n";
+    << "kinetic / internal energy in the displacement stage: at most " << r.max_kinetic_ratio << "\n"
+    << r.integration_flags << "\n";
   return o.str();
 }
 

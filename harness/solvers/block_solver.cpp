@@ -7,6 +7,7 @@
 
 #include "abi/props.hpp"
 #include "mortar/state.hpp"
+#include "output/flag_tally.hpp"
 #include "solvers/joint_calls.hpp"
 
 namespace mortar::harness {
@@ -134,7 +135,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   const auto clock_start = std::chrono::steady_clock::now();
   AbiSetup setup;
   setup.n_dir = 2;
-  setup.n_states = kStateCount;
+  setup.n_states = kFlaggedStateCount;  // SDV 1-23 and the integration flags (SDV 35)
   setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol);
   setup.stiffness_default = scene_.joint.values.kn;
   JointCalls joints(model_, setup, options_.block, options_.threads);
@@ -233,6 +234,10 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     snapshots->push_back(snapshot(joints, q, n_end * dt, "end"));
   }
   sum.increments = n_end;
+  FlagTally flags;
+  for (int i = 0; i < static_cast<int>(model_.points.size()); ++i)
+    flags.add(i, static_cast<int>(joints.state(i, flag_slot::integration_flags)));
+  sum.integration_flags = flags.summary(false);
   sum.seconds_in_routine = joints.seconds_in_routine();
   sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return sum;

@@ -73,6 +73,7 @@ struct WallRunSummary {
   double peak_shear = 0, peak_displacement = 0, peak_time = 0;  // largest |base shear| in the displacement stage
   double max_kinetic_ratio = 0;  // largest kinetic / internal energy in the displacement stage
   double max_balance_error = 0;  // largest |balance| / max(external work so far), displacement stage
+  std::string integration_flags;  // the points' SDV 35 at the end (output/flag_tally.hpp)
   double point_updates_per_second() const { return seconds > 0 ? points * double(increments) / seconds : 0; }
 };
 

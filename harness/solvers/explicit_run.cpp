@@ -19,7 +19,9 @@ class ExplicitSolver : public MockSolver {
       : block_(settings.block) {
     AbiSetup setup;
     setup.n_dir = scene.directions();
-    setup.n_states = kStateCount;  // the double routine's layout; SDV 24-34 are single precision's pairs
+    // The double routine's layout with the integration flags (SDV 35); it
+    // leaves SDV 24-34, single precision's pairs, as they are.
+    setup.n_states = kFlaggedStateCount;
     setup.props = props_for(parameters, settings.scheme, settings.stol);
     setup.stiffness_default = parameters.kn;
     const int points = scene.points();

@@ -20,7 +20,7 @@ class ImplicitSolver : public MockSolver {
   // only when set.
   ImplicitSolver(const Parameters& parameters, const Scene& scene, const ImplicitSettings& settings,
                  std::function<void(const ResidualSequence&)> observe)
-      : solver_(UinterSetup{scene.directions(), kStateCount,
+      : solver_(UinterSetup{scene.directions(), kFlaggedStateCount,
                             props_for(parameters, settings.scheme, settings.stol, settings.max_substeps)},
                 settings.options),
         observe_(std::move(observe)) {}

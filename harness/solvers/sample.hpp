@@ -19,6 +19,7 @@ struct Sample {
   Eigen::Vector3d separation = Eigen::Vector3d::Zero();  // law signs [mm]
   Eigen::Vector3d traction = Eigen::Vector3d::Zero();    // law signs [MPa]
   std::array<double, kStateCount> state{};               // SDV1..SDV23
+  int integration_flags = 0;                             // SDV35 (docs/model.md 9)
   double elastic_energy = 0;          // sed [N/mm]
   double dissipation_increment = 0;   // spd [N/mm]
   double dissipation = 0;             // sum of spd [N/mm]

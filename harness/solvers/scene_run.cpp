@@ -67,6 +67,7 @@ class SceneRun {
       s.separation = r.separation;
       s.traction = r.traction;
       std::copy_n(solver_.state(point), kStateCount, s.state.begin());
+      s.integration_flags = load_integration_flags(solver_.state(point));
       s.elastic_energy = r.elastic_energy;
       s.dissipation_increment = r.dissipation_increment;
       if (increment > 0) {

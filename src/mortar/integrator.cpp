@@ -126,6 +126,8 @@ void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, 
   P.y.substeps_accepted = st.substeps_accepted;
   P.y.substeps_rejected = st.substeps_rejected;
   P.y.status = 0;
+  if (st.min_substep_hit) st.flags |= integration_flag::floor_above_stol;
+  P.y.integration_flags |= st.flags;
   state = P.y;
   res.traction = P.sigma;
   res.elastic_energy = energy_end;
@@ -189,15 +191,27 @@ bool can_fall_back(Failure f) {
 // rest, and forward Euler, which has no error control to exhaust, the few
 // left. Backward Euler itself (cut or not) and a tighter STOL integrate fewer
 // at a higher cost and are not rungs.
+// Each rung's bit of integration_flag (SDV 35). The last rung has no error
+// control nor drift correction: its end point must be on or inside the
+// surface (`checked`), within the 10 FTOL invariant 10 allows the schemes
+// with a drift correction, or the rung has failed (docs/model.md 9).
 struct Rung {
   Scheme scheme;
   int pieces;
+  int flag;
+  bool checked;
 };
 constexpr Rung kChain[] = {
-    {Scheme::modified_euler, 8},
-    {Scheme::modified_euler, 64},
-    {Scheme::forward_euler, 1024},
+    {Scheme::modified_euler, 8, integration_flag::fallback_rung_1, false},
+    {Scheme::modified_euler, 64, integration_flag::fallback_rung_2, false},
+    {Scheme::forward_euler, 1024, integration_flag::fallback_rung_3, true},
 };
+
+// Whether a rung's end point (state and traction) is on or inside the
+// surface within 10 FTOL.
+bool on_or_inside(const Model& M, const State& end, const Vec3& traction) {
+  return yield_function(traction, surface_of(M, end)) <= 10 * yield_tolerance(M, traction);
+}
 // The substeps (accepted + rejected) and relaxation steps the whole chain may
 // spend, in units of Controls::max_substeps: the bound on its cost. Worst case
 // of one call: the first attempt (its own budgets), then at most
@@ -217,6 +231,7 @@ void add_counts(IntegrationStatus& sum, const IntegrationStatus& piece) {
   sum.newton_iterations += piece.newton_iterations;
   sum.plastic = sum.plastic || piece.plastic;
   sum.min_substep_hit = sum.min_substep_hit || piece.min_substep_hit;
+  sum.flags |= piece.flags;
   sum.failure = piece.failure;
 }
 
@@ -272,11 +287,14 @@ IncrementResult fall_back(const Model& M, const State& start, State& state, cons
     State end;
     IncrementResult r = run_pieces(R, start, end, d, rung.pieces, tangent ? &T : nullptr, budget);
     if (!r.status.ok()) continue;
+    if (rung.checked && !on_or_inside(R, end, r.traction)) continue;
     if (tangent) *tangent = T;
     r.status.first_failure = first.status.failure;
     r.status.fallback_scheme = rung.scheme;
     r.status.fallback_pieces = rung.pieces;
     r.status.tangent_approximate = true;
+    r.status.flags |= rung.flag;
+    end.integration_flags |= rung.flag;
     end.substeps_accepted = r.status.substeps_accepted;
     end.substeps_rejected = r.status.substeps_rejected;
     state = end;

@@ -1,5 +1,6 @@
 #include "mortar/parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -172,6 +173,9 @@ Model make_model(const Parameters& p, const Controls& c) {
   m.beta0 = 0.5 * (m.cohesion_term / m.tan_phi0 + p.ft0 * m.tan_phi0);
   m.stress_scale = p.ft0;
   m.separation_floor = p.ft0 / p.kn;
+  // The shorter of the elastic separation at ft0 and the mode-I softening
+  // length: what a substep at the floor must resolve (docs/model.md 7.4).
+  m.substep_length = std::min(m.separation_floor, p.GIC / p.ft0);
   m.cohesion_over_tan_phi0 = m.cohesion_term / m.tan_phi0;
   return m;
 }

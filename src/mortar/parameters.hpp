@@ -116,6 +116,9 @@ struct Model {
   // unworn joint (w_III = 0) [MPa].
   double separation_floor = 0;
   double cohesion_over_tan_phi0 = 0;
+  // The material length that bounds the smallest substep (min_substep_floor,
+  // docs/model.md 7.4) [mm].
+  double substep_length = 0;
 };
 
 // Builds a Model from validated inputs (call validate first). Non-throwing.

@@ -8,6 +8,22 @@
 
 namespace mortar {
 
+// What an increment's integration was besides converged (docs/model.md 9):
+// bits of IntegrationStatus::flags and, OR'd over a point's history, of
+// State::integration_flags (SDV 35). None is a failure: SDV 21 stays 0.
+namespace integration_flag {
+enum : int {
+  fallback_rung_1 = 1,   // the fallback chain's modified Euler over 8 pieces integrated it
+  fallback_rung_2 = 2,   // modified Euler over 64 pieces
+  fallback_rung_3 = 4,   // forward Euler over 1024 pieces (no error control; its end checked on the surface)
+  floor_above_stol = 8,  // a substep was accepted at the minimum substep with its error above STOL
+};
+inline constexpr int kCount = 4;
+// Each bit's short name, in bit order ("fallback_rung_1", ...).
+inline constexpr const char* kNames[kCount] = {"fallback_rung_1", "fallback_rung_2", "fallback_rung_3",
+                                               "floor_above_stol"};
+}  // namespace integration_flag
+
 struct IntegrationStatus {
   int substeps_accepted = 0;
   int substeps_rejected = 0;
@@ -33,6 +49,8 @@ struct IntegrationStatus {
   Scheme fallback_scheme = Scheme::modified_euler;
   int fallback_pieces = 0;
   bool fell_back() const { return fallback_pieces > 0; }
+  // This increment's integration_flag bits (min_substep_hit, the rung).
+  int flags = 0;
   bool ok() const { return failure == Failure::none; }
 };
 

@@ -55,6 +55,19 @@ enum : int {
 // ones need kStateCount.
 inline constexpr int kPairedStateCount = low_slot::end;
 
+// SDV 35, both precisions, written only with DEPVAR >= 35 (docs/model.md 3):
+// the point's integration flags (mortar::integration_flag, result.hpp), OR'd
+// over its history. An elastic increment sets none, so the elastic paths
+// leave the slot as it is.
+namespace flag_slot {
+enum : int {
+  integration_flags = low_slot::end,  // 35
+  end                                 // = 35 state variables
+};
+}  // namespace flag_slot
+// The DEPVAR (NSTATV) from which the routines keep the integration flags.
+inline constexpr int kFlaggedStateCount = flag_slot::end;
+
 // Each paired variable's high slot and its low slot.
 struct SlotPair {
   int high, low;
@@ -84,6 +97,9 @@ struct State {
   int substeps_accepted = 0;
   int substeps_rejected = 0;
   int status = 0;
+  // SDV 35: every integration_flag an increment of this point has raised
+  // (OR'd; outside SDV 1-23, so load_state/store_state leave it).
+  int integration_flags = 0;
 
   Vec3 elastic_separation() const { return separation - plastic; }
 };
@@ -139,6 +155,18 @@ inline void store_state(const State& s, Real* a) {
   a[slot::substeps_accepted] = Real(s.substeps_accepted);
   a[slot::substeps_rejected] = Real(s.substeps_rejected);
   a[slot::status] = Real(s.status);
+}
+
+// SDV 35 as the flags it holds (what no flags can be, a negative value or
+// int_slot's garbage, reads as none); and back.
+template <class Real>
+int load_integration_flags(const Real* a) {
+  const int v = int_slot(a[flag_slot::integration_flags]);
+  return v > 0 ? v : 0;
+}
+template <class Real>
+void store_integration_flags(int flags, Real* a) {
+  a[flag_slot::integration_flags] = Real(flags);
 }
 
 // Short names of the state variables in slot order (for CSV headers, docs).

@@ -1,10 +1,11 @@
 // The state array of the Explicit routines in both precisions (docs/model.md
 // 3, vuinteraction/adapter/state_storage.hpp): with DEPVAR = 23 the routine is
 // the law over the plain layout in its precision, bit for bit (single: the
-// fallback; double: always); in double precision SDV 24 onwards are never
-// touched and DEPVAR = 34 gives the DEPVAR = 23 results bit for bit; in single
-// precision DEPVAR >= 34 keeps SDV 1-23 as the plain layout reads them and
-// the low parts in SDV 24-34.
+// fallback; double: always); in double precision SDV 24-34 and 36 onwards are
+// never touched and DEPVAR = 34 or 40 gives the DEPVAR = 23 results bit for
+// bit; in single precision DEPVAR >= 34 keeps SDV 1-23 as the plain layout
+// reads them and the low parts in SDV 24-34; with DEPVAR >= 35 both keep the
+// integration flags in SDV 35 (docs/model.md 9).
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -111,10 +112,11 @@ TEST_CASE("State array: with DEPVAR = 23 the routine is the law over the plain l
 }
 
 TEST_CASE("State array: slots beyond the routine's layout are never touched and in double precision "
-          "DEPVAR = 34 gives the DEPVAR = 23 results bit for bit",
+          "DEPVAR = 40 gives the DEPVAR = 23 results bit for bit",
           "[abi][state]") {
   const int declared = 40;
   const int used = kDouble ? mortar::kStateCount : mortar::kPairedStateCount;
+  const int flags = mortar::flag_slot::integration_flags;
   OnePoint wide(m15_props(), declared), narrow(m15_props(), mortar::kStateCount);
   std::fill(wide.state.begin() + used, wide.state.end(), kSentinel);
   const int n = 400;
@@ -124,11 +126,17 @@ TEST_CASE("State array: slots beyond the routine's layout are never touched and 
     apply(narrow, inputs(i, n));
     wide.call();
     narrow.call();
-    untouched += std::all_of(wide.state.begin() + used, wide.state.end(), [](Real x) { return x == kSentinel; });
+    // Every slot beyond the layout but SDV 35, the integration flags.
+    bool beyond = true;
+    for (int j = used; j < declared; ++j) beyond = beyond && (j == flags || wide.state[j] == kSentinel);
+    untouched += beyond;
     differences += !std::equal(narrow.state.begin(), narrow.state.end(), wide.state.begin());
     differences += !std::equal(narrow.stress, narrow.stress + 3, wide.stress);
   }
   CHECK(untouched == n + 1);
+  // The full path wrote SDV 35 (a value that is no flags, -7.5, read as
+  // none): no fallback, no substep accepted at the floor on this path.
+  CHECK(wide.state[flags] == Real(0));
   if (kDouble) CHECK(differences == 0);
   if (!kDouble) CHECK(differences > 0);  // the pairs carry what plain floats lose
 }
@@ -296,4 +304,29 @@ TEST_CASE("State array: a first call replaces SDV 22 whatever it holds, on the e
       }
     }
   }
+}
+
+TEST_CASE("State array: with DEPVAR = 35 SDV 35 holds the integration flags, and SDV 1-34 are those of the "
+          "layout without it",
+          "[abi][state][flags]") {
+  // A floor of half the increment (props(19) = 0.5): the first plastic
+  // increment accepts a substep at it above STOL (docs/model.md 9, flag 8).
+  std::vector<Real> props = m15_props();
+  props.resize(mortar::kPropsWithControls, Real(0));
+  props[18] = Real(0.5);
+  const int layout = kDouble ? mortar::kStateCount : mortar::kPairedStateCount;
+  OnePoint flagged(props, mortar::kFlaggedStateCount), plain(props, layout);
+  const int n = 40;
+  int differences = 0;
+  for (int i = 0; i <= n; ++i) {
+    apply(flagged, inputs(i, n));
+    apply(plain, inputs(i, n));
+    flagged.call();
+    plain.call();
+    differences += !same_bits(plain.state.data(), flagged.state.data(), layout);
+    differences += !same_bits(plain.stress, flagged.stress, 3);
+  }
+  CHECK(differences == 0);
+  CHECK(flagged.state[mortar::slot::status] == Real(0));  // a flag is no failure
+  CHECK(flagged.state[mortar::flag_slot::integration_flags] == Real(mortar::integration_flag::floor_above_stol));
 }

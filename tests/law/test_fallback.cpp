@@ -70,6 +70,14 @@ TEST_CASE("Fallback: an increment beyond the substep budget is integrated by the
   CHECK(r.status.tangent_approximate);
   CHECK(T.allFinite());
   CHECK(s.status == 0);
+  // Flagged beside SDV 21 (docs/model.md 9): the rung's bit, in the
+  // increment's status and OR'd into the state.
+  const int rung = r.status.fallback_pieces == 8    ? integration_flag::fallback_rung_1
+                   : r.status.fallback_pieces == 64 ? integration_flag::fallback_rung_2
+                                                    : integration_flag::fallback_rung_3;
+  CHECK((r.status.flags & rung) != 0);
+  CHECK((s.integration_flags & rung) != 0);
+  CHECK((s.integration_flags & ~r.status.flags) == 0);
   CHECK(check_state(s) == nullptr);
   CHECK(s.separation == start.separation + kSlip);
   // The fallback's answer is the law's: within the rung's accuracy of the

@@ -357,6 +357,7 @@ struct ExplicitBlock {
   // instructions rather than calls of memcpy and loops.
   int store_float(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
                   const mortar::IncrementResult& r, bool first) const {
+    if (storage.flags) return store_float_over<mortar::kFlaggedStateCount>(setup, storage, k, st, s, r, first);
     if (storage.pairs) return store_float_over<mortar::kPairedStateCount>(setup, storage, k, st, s, r, first);
     return store_float_over<mortar::kStateCount>(setup, storage, k, st, s, r, first);
   }

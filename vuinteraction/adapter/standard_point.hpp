@@ -172,6 +172,9 @@ struct StandardPoint {
     double* st = statev;
     mortar::State s;
     mortar::load_state(st, s);
+    // SDV 35, the integration flags, with NSTATV >= 35 (docs/abaqus.md).
+    const bool flags = counts.n_states >= mortar::kFlaggedStateCount;
+    if (flags) s.integration_flags = mortar::load_integration_flags(st);
     if (counts.n_dir == 3) rotate_tangential_state(drot, s);
     const bool first = st[slot::initialised] == 0.0;
     // The reference is the start-of-increment position, the same in every
@@ -183,6 +186,7 @@ struct StandardPoint {
     mortar::Mat3 T;
     const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, d, &T);
     mortar::store_state(s, st);
+    if (flags) mortar::store_integration_flags(s.integration_flags, st);
     write_stress(setup, r.traction, T);
     *sed = r.elastic_energy;
     *spd = r.d_inelastic();

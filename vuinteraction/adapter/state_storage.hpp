@@ -10,6 +10,10 @@
 //            it are lost or rounded away and softening stalls at the
 //            increments Abaqus/Explicit takes; the pair keeps about 48 bits.
 //            With DEPVAR 23..33, plain floats, and one warning per process.
+//   both     with DEPVAR >= 35, the integration flags in SDV 35
+//            (mortar::flag_slot), OR'd by the law over the point's history;
+//            an elastic increment raises none, so the elastic paths never
+//            touch the slot.
 #pragma once
 
 #include <algorithm>
@@ -29,12 +33,14 @@ struct StateStorage {
   static constexpr bool kSingle = std::is_same_v<Real, float>;
 
   bool pairs = false;               // float pairs in SDV 24-34
+  bool flags = false;               // integration flags in SDV 35
   int count = mortar::kStateCount;  // slots read and written per point
 
   static StateStorage of(int n_states) {
     StateStorage s;
     s.pairs = kSingle && n_states >= mortar::kPairedStateCount;
-    s.count = s.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
+    s.flags = n_states >= mortar::kFlaggedStateCount;
+    s.count = s.flags ? mortar::kFlaggedStateCount : s.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
     return s;
   }
 
@@ -50,6 +56,7 @@ struct StateStorage {
   }
 
   void load(const Real* st, mortar::State& s) const {
+    if (flags) s.integration_flags = mortar::load_integration_flags(st);
     if constexpr (kSingle) {
       if (pairs) return mortar::load_state_pairs(st, s);
     }
@@ -142,6 +149,7 @@ struct StateStorage {
   }
 
   void store(const mortar::State& s, Real* st) const {
+    if (flags) mortar::store_integration_flags(s.integration_flags, st);
     if constexpr (kSingle) {
       if (pairs) return mortar::store_state_pairs(s, st);
     }

@@ -30,6 +30,23 @@ struct SchemeTraits {
   bool branches_from_first_stage = false;
 };
 
+// The smallest substep of a plastic part of length n (|d|) from a point of
+// strength s_raw, as a fraction of it (docs/model.md 7.4): min_substep, but
+// never longer than min_substep L / s_raw, L the material length over which
+// the joint softens (Model::substep_length). A floor that is a fraction of
+// the increment alone grows with the increment, past that length, and the
+// substeps accepted there above STOL book energy the law does not dissipate
+// (docs/model.md 9, large increments). What such a substep can misbook is
+// about its length times the traction, s_raw ft0: the bound holds it to
+// min_substep L ft0 whatever the increment, and lets the floor grow back
+// where little strength is left (and none is to lose), so that a kink in
+// the flow there, which no substep size resolves, costs as few substeps as
+// before. An increment no longer than L keeps min_substep.
+inline double min_substep_floor(const Model& M, double n, double s_raw) {
+  const double c = M.controls.min_substep, L = M.substep_length, ns = n * s_raw;
+  return ns > L ? c * (L / ns) : c;
+}
+
 // What one attempted substep came to.
 struct Attempt {
   enum Kind { step, retry, fail, on_boundary } kind = step;
@@ -65,9 +82,13 @@ class SubstepScheme {
   }
   // Size of the next substep after an accepted one of size dT.
   virtual double next_size(double dT) = 0;
+  // The smallest substep of this run, as a fraction of its separation
+  // increment (min_substep_floor); set by the substepper before each run.
+  void set_floor(double floor) { floor_ = floor; }
 
  protected:
   ~SubstepScheme() = default;
+  double floor_ = 1e-4;
 };
 
 // One explicit step of the rate statement per substep, no error control.
@@ -99,6 +120,11 @@ class ModifiedEuler final : public SubstepScheme {
   Point end_;
   Surface end_surface_;  // of end_'s works: the error estimate's, and the next substep's
   Branches grow_;  // the first stage's damage branches (drift correction)
+  // The substep's start: damages and squared elastic separations (normal,
+  // in-plane), for the damage booking's check in recheck().
+  struct DamageStart {
+    double dn = 0, ds = 0, en2 = 0, es2 = 0;
+  } start_;
   double error_ = 0;
   bool last_rejected_ = false;
 };

@@ -14,6 +14,11 @@ constexpr int kMaxCrossingCuts = 40;  // docs/model.md 6, regime switches inside
 double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   const Controls& c = M.controls;
   at_ = at;
+  // The floor follows the strength left (min_substep_floor); an increment no
+  // longer than the material length keeps min_substep throughout.
+  const double length = d.norm();
+  const bool bounded = length > M.substep_length;
+  scheme.set_floor(c.min_substep);
   at_boundary_ = false;
   // Every bracket starts closed: one left open by the run before (stopped
   // inside it) would cut this run's substeps towards another point's sizes.
@@ -41,6 +46,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
     if (unloaded && yield_of(P, at_) < -yield_tolerance(M, P.sigma)) return T;
+    if (bounded) scheme.set_floor(min_substep_floor(M, length, at_.S.s_raw));
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
     with_psi(M, at_.S, P.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
