@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cone.hpp"
 #include "mortar/integration/relaxation.hpp"
 
 namespace mortar {
@@ -49,6 +50,20 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
       at_ = surface_at(M, P);
       tangent.forget(st);
       continue;
+    }
+    // On the fully softened normal the rest of the run is one scalar solve
+    // (cone.hpp; docs/model.md 6, Decision - sliding on the cone), for every
+    // scheme; not while a bracket is being closed.
+    if (r1.plastic && !cut_.active && !sep_cut_.active) {
+      const ConeStep cone = cone_step(M, P, at_, (1 - T) * d, r1.grow);
+      if (cone.done > 0) {
+        at_ = surface_at(M, P);
+        tangent.forget(st);
+        ++st.substeps_accepted;
+        T += cone.done * (1 - T);
+        if (cone.separates) return std::min(T, 1.0);
+        return 1;
+      }
     }
     const Attempt a = scheme.attempt(P, dd, dT, r1);
     if (a.kind == Attempt::retry) {
