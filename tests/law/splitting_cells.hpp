@@ -74,6 +74,9 @@ struct Measured {
   std::vector<double> tight_by_calls, default_by_calls;
   double tight = 0, defaults = 0;  // the worst of each
   long reference_failures = 0, tight_failures = 0, default_failures = 0;
+  // The most substeps one call took (Run::worst_work): over the tight runs,
+  // the reference included, and over the default runs.
+  long tight_work = 0, default_work = 0;
   bool any_failure() const { return reference_failures + tight_failures + default_failures > 0; }
 };
 
@@ -86,15 +89,18 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
   m.increments = ref.traction.size();
   m.peak = peak(ref.traction);
   m.reference_failures = ref.failures;
+  m.tight_work = ref.worst_work;
   for (int n : tight_calls) {
     const Run r = drive(Mt, w, c.h, n);
     m.tight_failures += r.failures;
+    m.tight_work = std::max(m.tight_work, r.worst_work);
     m.tight_by_calls.push_back(worst(r.traction, ref.traction, m.peak));
     m.tight = std::max(m.tight, m.tight_by_calls.back());
   }
   for (int n : default_calls) {
     const Run r = drive(Md, w, c.h, n);
     m.default_failures += r.failures;
+    m.default_work = std::max(m.default_work, r.worst_work);
     m.default_by_calls.push_back(worst(r.traction, ref.traction, m.peak));
     m.defaults = std::max(m.defaults, m.default_by_calls.back());
   }

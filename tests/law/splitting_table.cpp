@@ -7,7 +7,10 @@
 //   default = 1 call per increment at the default controls (STOL 1e-5,
 //             FTOL 1e-8) against that tight reference (requirement (b),
 //             bound 1e-3).
-// "fail n" counts calls that failed (the row is then not comparable).
+// "fail n" counts calls that failed (the row is then not comparable). The
+// substeps columns give the most substeps one call took (accepted, rejected
+// and relaxation steps), over the tight runs (reference included) and over
+// the default run.
 //
 // Usage: splitting_table [--h 1e-3,1e-4,1e-5] [--family NAME] [--set NAME]
 //                        [--all-sets]
@@ -68,10 +71,10 @@ std::string cell_text(double e, long failures) {
 void row(const std::string& family, const NamedSet& ns, const Cell& c) {
   const Measured m = measure(family, ns, c);
   const long tf = m.tight_failures + m.reference_failures;
-  std::printf("| %s | %s | %.0e | %zu | %s | %s | %s | %s |\n", family.c_str(), ns.name.c_str(), c.h,
+  std::printf("| %s | %s | %.0e | %zu | %s | %s | %s | %ld | %ld | %s |\n", family.c_str(), ns.name.c_str(), c.h,
               m.increments, cell_text(m.tight_by_calls[0], tf).c_str(), cell_text(m.tight_by_calls[1], tf).c_str(),
-              cell_text(m.defaults, m.default_failures + m.reference_failures).c_str(),
-              (m.tight <= 1e-6 && m.defaults <= 1e-3 && !m.any_failure()) ? "yes" : "**no**");
+              cell_text(m.defaults, m.default_failures + m.reference_failures).c_str(), m.tight_work,
+              m.default_work, (m.tight <= 1e-6 && m.defaults <= 1e-3 && !m.any_failure()) ? "yes" : "**no**");
   std::fflush(stdout);
 }
 
@@ -80,7 +83,8 @@ void row(const std::string& family, const NamedSet& ns, const Cell& c) {
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::printf("| family | set | h (mm) | increments | tight, 1 call | tight, 20 calls | default, 1 call "
-              "| within 1e-6 / 1e-3 |\n|---|---|---|---|---|---|---|---|\n");
+              "| substeps per call, tight | substeps per call, default | within 1e-6 / 1e-3 |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& family : families()) {
     if (!o.family.empty() && family != o.family) continue;
     for (double h : o.hs) {

@@ -150,11 +150,14 @@ inline Path path_of(const std::string& family, const Parameters& p, unsigned see
   return w;
 }
 
-// The tractions after each increment, and the calls that failed.
+// The tractions after each increment, the calls that failed, and the most
+// substeps (accepted, rejected and relaxation steps: what max_substeps
+// bounds) one call took.
 struct Run {
   std::vector<Vec3> traction;
   long failures = 0;
   long calls = 0;
+  long worst_work = 0;
 };
 
 // Each leg cut into increments of about h (a jump: one), each increment
@@ -172,6 +175,7 @@ inline Run drive(const mortar::Model& M, const Path& w, double h, int calls) {
       for (int c = 0; c < calls; ++c) {
         r = mortar::integrate_increment(M, s, d / n / calls);
         out.failures += !r.status.ok();
+        out.worst_work = std::max(out.worst_work, r.status.work());
         ++out.calls;
       }
       out.traction.push_back(r.traction);

@@ -70,7 +70,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
     add(end_, r2, 0.5);
     end_.y.separation += dd;
     shape_into(M_, end_.y.wI, end_.y.wII, end_.y.wIII, end_surface_);
-    error_ = local_error(r1, r2, end_, end_surface_);
+    error_ = local_error(P, r1, r2, end_, end_surface_);
   }
   if (error_ > c.stol && dT > floor_) {
     last_rejected_ = true;
@@ -132,14 +132,19 @@ double ModifiedEuler::next_size(double dT) {
 // 2001, Eq. for R_n+1), over the traction, the softening factor (relative)
 // and the wear exponent; the traction norm is floored at 1e-3 ft0 so that
 // states near zero traction do not force endless subdivision.
-double ModifiedEuler::local_error(const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const {
+double ModifiedEuler::local_error(const Point& P, const Rates& r1, const Rates& r2, const Point& N,
+                                  const Surface& S) const {
   const double floor = 1e-3 * M_.stress_scale;
   const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
   // The softening factor relative to what is left of it: where s runs out
   // (towards complete separation, kSeparated) an absolute error lets the
-  // place of the separation depend on the cuts (docs/model.md 7.1).
-  const double e_s = 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) /
-                     std::max(S.s, kSeparated);
+  // place of the separation depend on the cuts (docs/model.md 7.1). A joint
+  // already fully softened (s_raw <= 0 at the start) keeps s = 0 whatever
+  // the works do, so nothing of the surface is in error there.
+  const bool softened = 1.0 - P.y.wI / M_.p.GIC - P.y.wII / M_.p.GIIC <= 0;
+  const double e_s = softened ? 0.0
+                              : 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) /
+                                    std::max(S.s, kSeparated);
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
   return std::max(e_sigma, std::max(e_s, e_t));
 }

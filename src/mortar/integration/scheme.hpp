@@ -114,7 +114,7 @@ class ModifiedEuler final : public SubstepScheme {
   double next_size(double dT) override;
 
  private:
-  double local_error(const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const;
+  double local_error(const Point& P, const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const;
   const Model& M_;
   IntegrationStatus& st_;
   Point end_;

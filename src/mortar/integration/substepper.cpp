@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cone.hpp"
 #include "mortar/integration/relaxation.hpp"
 
 namespace mortar {
@@ -60,7 +61,24 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
       tangent.forget(st);
       continue;
     }
-    const Attempt a = scheme.attempt(P, dd, dT, r1);
+    // On the fully softened normal the rest of the run is one scalar solve
+    // (cone.hpp; docs/model.md 6, Decision - sliding on the cone), for every
+    // scheme; not while a bracket is being closed.
+    if (r1.plastic && !cut_.active && !sep_cut_.active) {
+      const ConeStep cone = cone_step(M, P, at_, (1 - T) * d, r1.grow);
+      if (cone.done > 0) {
+        at_ = surface_at(M, P);
+        tangent.forget(st);
+        ++st.substeps_accepted;
+        T += cone.done * (1 - T);
+        if (cone.separates) return std::min(T, 1.0);
+        return 1;
+      }
+    }
+    // The apex zone of a worn open joint (in_apex_zone): backward-Euler
+    // substeps, whatever the scheme (docs/model.md 6, Decision - the apex zone).
+    SubstepScheme& sch = in_apex_zone(M, P, at_) ? static_cast<SubstepScheme&>(apex_) : scheme;
+    const Attempt a = sch.attempt(P, dd, dT, r1);
     if (a.kind == Attempt::retry) {
       dT = a.size;
       ++st.substeps_rejected;
@@ -89,8 +107,8 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     const bool switch_here = crossing_kind == Crossing::ends_on_boundary;
     Point& Q = *a.end;  // the scheme's own, which its next attempt overwrites
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
-    scheme.before_settle(Q);
-    settle(M, Q, P.y.elastic_separation(), scheme.traits.branches_from_first_stage ? r1.grow : Branches{});
+    sch.before_settle(Q);
+    settle(M, Q, P.y.elastic_separation(), sch.traits.branches_from_first_stage ? r1.grow : Branches{});
     if (normal == Landing::lands) {
       complete_normal_damage(M, Q.y);
       Q.sigma = traction_of(M, Q.y);
@@ -99,12 +117,12 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
     at_Q.radius = shear_radius(Q.sigma, SN);
-    if (const double retry = scheme.recheck(Q, at_Q, dT, lands); retry > 0) {
+    if (const double retry = sch.recheck(Q, at_Q, dT, lands); retry > 0) {
       dT = retry;
       ++st.substeps_rejected;
       continue;
     }
-    scheme.commit(P, Q, at_Q, dd, T, dT, lands);
+    sch.commit(P, Q, at_Q, dd, T, dT, lands);
     at_ = at_Q;
     ++st.substeps_accepted;
     unloaded = !r1.plastic;
@@ -121,7 +139,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // The next substep's size, when there is one: a run that reaches T = 1
     // has done its segment, and no later substep of the increment reads what
     // next_size() keeps (its square root and division are then not waited on).
-    if (T < 1) dT = scheme.next_size(dT);
+    if (T < 1) dT = sch.next_size(dT);
   }
   return 1;
 }

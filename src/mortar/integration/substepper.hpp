@@ -19,7 +19,7 @@ namespace mortar {
 class Substepper {
  public:
   Substepper(const Model& M, Point& P, IntegrationStatus& st, TangentTracker& tangent, SubstepScheme& scheme)
-      : M(M), P(P), st(st), tangent(tangent), scheme(scheme) {}
+      : M(M), P(P), st(st), tangent(tangent), scheme(scheme), apex_(M, st, tangent) {}
 
   // Plastic substepping over the separation increment d, starting on the
   // surface; `at` is the surface at P (surface_at). Returns the fraction of
@@ -55,6 +55,7 @@ class Substepper {
   IntegrationStatus& st;
   TangentTracker& tangent;
   SubstepScheme& scheme;
+  BackwardEuler apex_;  // the apex zone's substeps, every scheme
   bool at_boundary_ = false;
   SurfaceAt at_;  // the surface at P, evaluated once per substep state
   CrossingBracket cut_;
@@ -64,6 +65,17 @@ class Substepper {
   CrossingBracket dn_cut_;
   int dn_cuts_ = 0;
 };
+
+// The apex zone of a worn open joint (docs/model.md 6, Decision - the apex
+// zone): open, the normal not completed, its traction inside the blend of the
+// normal flow (0 < sigma_n < ft, docs/model.md 5) on a joint whose whole
+// tension cap lies below the local error's traction floor (ft = s ft0 <
+// 1e-3 ft0). There the blend's slope (tan phi - tan psi)/ft makes the normal
+// a stiff relaxation that explicit substeps resolve only at the floor.
+inline bool in_apex_zone(const Model& M, const Point& P, const SurfaceAt& at) {
+  const double ft = M.p.ft0 * at.S.s;
+  return P.y.open && P.y.dn < 1 && ft < 1e-3 * M.p.ft0 && P.sigma[0] > 0 && P.sigma[0] < ft && at.radius.tau > 0;
+}
 
 // Round-off scale of the regime boundary delta_e_n = 0 at a state.
 inline double boundary_eps(const Model& M, const State& y) {
