@@ -366,7 +366,7 @@ struct ExplicitBlock {
                        const mortar::IncrementResult& r, bool first) const {
     Real end[kCount];
     std::copy(st, st + kCount, end);
-    storage.store(s, end);
+    storage.store_into(s, end);
     if (first) mark_initialised(k, end);
     Real stress_end[3];
     abaqus_stress(setup, r.traction, stress_end);

@@ -150,13 +150,28 @@ struct StateStorage {
 
   void store(const mortar::State& s, Real* st) const {
     if (flags) mortar::store_integration_flags(s.integration_flags, st);
+    store_without_flags(s, st);
+  }
+  // store() into an array of kCount values (single precision's staging copy,
+  // ExplicitBlock::store_float_over): the flags' slot only where the array
+  // holds it, which the dispatch on `flags` already ensures at run time.
+  template <int kCount>
+  void store_into(const mortar::State& s, Real (&a)[kCount]) const {
+    if constexpr (kCount > mortar::flag_slot::integration_flags) {
+      store(s, a);
+    } else {
+      store_without_flags(s, a);
+    }
+  }
+
+ private:
+  void store_without_flags(const mortar::State& s, Real* st) const {
     if constexpr (kSingle) {
       if (pairs) return mortar::store_state_pairs(s, st);
     }
     mortar::store_state(s, st);
   }
 
- private:
   // store_elastic() with a pair that is not canonical: every slot store()
   // writes, through a copy checked before it is stored (the pairs' rounding
   // out of line, mortar::store_state_pairs). Out of line and given a copy
