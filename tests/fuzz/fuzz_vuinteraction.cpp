@@ -380,9 +380,18 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
   for (int k = 0; k < b.n_block; ++k) {
     const Real* s0 = before.state.data() + k * per_point;
     const Real* s1 = b.state.data() + k * per_point;
-    // Nothing beyond the routine's slots of state(:, 1, k) is touched.
-    for (long i = slots; i < per_point; ++i)
+    // Nothing beyond the routine's slots of state(:, 1, k) is touched, but
+    // for the integration flags (SDV 35, with nStates >= 35, either
+    // precision): a whole number of the four bits (docs/model.md 9).
+    const bool flagged = b.n_states >= mortar::kFlaggedStateCount;
+    for (long i = slots; i < per_point; ++i) {
+      if (flagged && i == mortar::flag_slot::integration_flags) continue;
       if (!same_bits(s0[i], s1[i])) fail("%s: point %d: state slot %ld (beyond SDV %d or node state 2) written", when.c_str(), k + 1, i + 1, slots);
+    }
+    if (flagged && !same_bits(s0[mortar::flag_slot::integration_flags], s1[mortar::flag_slot::integration_flags])) {
+      const double f = double(s1[mortar::flag_slot::integration_flags]);
+      if (!(f >= 0 && f <= 15 && f == std::floor(f))) fail("%s: point %d: SDV 35 = %g is not a set of flags", when.c_str(), k + 1, f);
+    }
     const double pen = double(b.penetration[k]);
     if (pen <= -1e30) {  // no opposite surface: nothing happens, nothing carried
       ++stats.unpaired;
