@@ -21,8 +21,9 @@ int inp_command(const InpArgs& a, std::ostream& out) {
   o.name = a.name;
   // Abaqus/Explicit loads the single-precision routine unless the job says
   // double=both; it keeps its state as float pairs only with DEPVAR >= 34
-  // (docs/model.md 3). The double routine reads the first 23 and ignores the rest.
-  o.depvar = kPairedStateCount;
+  // (docs/model.md 3), and either routine records the integration flags in
+  // SDV 35 with DEPVAR >= 35 (docs/model.md 9).
+  o.depvar = kFlaggedStateCount;
   o.props.assign(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
   if (controls && a.scheme.empty()) o.props[kParameterCount] = 0.0;
   write_surface_interaction(out, o);
