@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "validation/checks.hpp"
 
@@ -163,7 +164,7 @@ std::string terminal(int i, int width, int height) {
 
 std::ofstream open_script(const std::string& out_dir, const std::string& name) {
   std::ofstream g(out_dir + "/" + name);
-  if (!g) throw InputError(out_dir + "/" + name + ": cannot open the file for writing");
+  if (!g) throw InputError(cannot_write(out_dir + "/" + name));
   g << "# Written by masonry-joint bench; rerun with: gnuplot " << name << "\n";
   return g;
 }

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 #include "validation/checks.hpp"
 
 namespace mortar::harness {
@@ -128,7 +129,7 @@ std::string target_table(const BenchResult& r, const std::string& path) {
 // Free text in a CSV field: no commas or quotes, so that the field splits plainly.
 void write_rows_csv(const std::string& file, const BenchResult& r) {
   std::ofstream f(file);
-  if (!f) throw InputError(file + ": cannot open the file for writing");
+  if (!f) throw InputError(cannot_write(file));
   f << "path,scheme,stol,increment_mm,increments,error_traction,error_energy,ns_per_update,ns_min,ns_max,"
        "points,calls,repeats,reproduced,path_us_per_point,outcome,drift_ratio,drifted_increments,seconds_one_point,why\n";
   for (const BenchRow& row : r.rows) {
@@ -146,7 +147,7 @@ void write_rows_csv(const std::string& file, const BenchResult& r) {
 
 void write_references_csv(const std::string& file, const BenchResult& r) {
   std::ofstream f(file);
-  if (!f) throw InputError(file + ": cannot open the file for writing");
+  if (!f) throw InputError(cannot_write(file));
   f << "path,increment_mm,increments,stol,ftol,split,check_stol,check_ftol,check_split,difference_traction,"
        "difference_energy,seconds\n";
   const ReferenceSettings& rs = r.reference;
@@ -203,7 +204,7 @@ std::string stability_list(const BenchResult& r) {
 
 void write_text(const std::string& file, const std::string& text) {
   std::ofstream f(file);
-  if (!f) throw InputError(file + ": cannot open the file for writing");
+  if (!f) throw InputError(cannot_write(file));
   f << text;
   if (!f) throw InputError(file + ": write failed");
 }

@@ -14,6 +14,7 @@
 #include "bench/plots.hpp"
 #include "input/input_error.hpp"
 #include "mortar/integrator.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "validation/checks.hpp"
 
@@ -225,15 +226,6 @@ class Study {
   TimingPolicy policy_;
 };
 
-void prepare_out_dir(const std::string& dir) {
-  if (dir.empty()) throw InputError("--out is empty: the bench needs a directory to write its files into");
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw InputError("--out " + dir + ": exists and is not a directory (the bench writes several files into it)");
-  fs::create_directories(dir, ec);
-  if (ec) throw InputError("--out " + dir + ": cannot create the directory: " + ec.message());
-}
-
 std::string plain_number(double x) {
   std::ostringstream s;
   s << x;
@@ -247,7 +239,7 @@ void check_options(const BenchOptions& o) {
   std::error_code ec;
   if (!fs::is_directory(o.data_dir, ec))
     throw InputError("--data " + o.data_dir + ": not a directory (the calibration_data/ folder is expected)");
-  prepare_out_dir(o.out_dir);
+  prepare_output_folder(o.out_dir, "--out");
 }
 
 }  // namespace

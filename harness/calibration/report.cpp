@@ -8,6 +8,7 @@
 
 #include "input/input_error.hpp"
 #include "output/csv.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "solvers/mixed_control.hpp"
 
@@ -118,7 +119,7 @@ std::string write_calibration_plots(const std::string& out_dir, const std::vecto
   static const char* colour[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"};
   const std::string name = "calibration.gp";
   std::ofstream g(out_dir + "/" + name);
-  if (!g) throw InputError(out_dir + "/" + name + ": cannot open the file for writing");
+  if (!g) throw InputError(cannot_write(out_dir + "/" + name));
   g << "# Written by masonry-joint calibrate; rerun with: gnuplot " << name << "\nset datafile separator \",\"\n";
   struct Panel {
     const char *title, *xlabel, *ylabel, *data, *fit;

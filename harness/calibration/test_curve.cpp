@@ -9,6 +9,7 @@
 
 #include "input/input_error.hpp"
 #include "output/csv.hpp"
+#include "output/output_paths.hpp"
 
 namespace fs = std::filesystem;
 
@@ -141,7 +142,7 @@ std::vector<TestCurve> read_test_curves(const std::string& dir) {
 
 void write_test_curve(const std::string& path, const TestCurve& c, const std::vector<std::string>& comments) {
   std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot open the file for writing");
+  if (!out) throw InputError(cannot_write(path));
   for (const std::string& line : comments) out << "# " << line << "\n";
   out << "# kind: " << test_kind_name(c.kind) << "\n";
   out.precision(6);

@@ -8,6 +8,7 @@
 #include "calibration/report.hpp"
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 
 namespace fs = std::filesystem;
@@ -59,9 +60,7 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
   if (o.increments < 10 || o.increments > 100000)
     throw InputError("--increments " + std::to_string(o.increments) + " violates the rule: 10 <= increments <= 100000");
   const std::vector<TestCurve> curves = read_test_curves(o.data_dir);
-  if (fs::exists(o.out_dir) && !fs::is_directory(o.out_dir))
-    throw InputError("--out " + o.out_dir + ": exists and is not a directory");
-  fs::create_directories(o.out_dir);
+  prepare_output_folder(o.out_dir, "--out");
   CalibrationSettings settings;
   settings.fit.simulation.increments = o.increments;
   settings.fit.progress = progress_line(err, "one set", o.quiet);

@@ -11,6 +11,7 @@
 #include "input/protocol.hpp"
 #include "output/csv.hpp"
 #include "output/flag_tally.hpp"
+#include "output/output_paths.hpp"
 #include "output/progress.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/explicit_run.hpp"
@@ -27,7 +28,7 @@ const std::map<std::string, Scheme>& scheme_names() {
 
 void check_stol(double stol) {
   if (stol != 0 && !(stol > 0 && stol < 1))
-    throw InputError("--stol " + format_number(stol, 9) + " violates the rule 0 < STOL < 1 (0 keeps the default)");
+    throw InputError("--stol " + input_number(stol) + " violates the rule 0 < STOL < 1 (0 keeps the default)");
 }
 
 void check_solver_options(const SolverOptionUse& u) {
@@ -86,7 +87,7 @@ void summary(const RunArgs& a, const ImplicitStatistics& st, const FlagTally& fl
 class RunOutput {
  public:
   explicit RunOutput(const RunArgs& a) : file_(a.out), csv_(a.out), progress_("run", a.quiet) {
-    if (!csv_) throw InputError(file_ + ": cannot open the file for writing");
+    if (!csv_) throw InputError(cannot_write(file_));
     write_run_header(csv_);
   }
   void write(const Sample& s) { write_run_row(csv_, s); }
@@ -212,7 +213,10 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
 
 int run_command(const RunArgs& a, std::ostream& err) {
   check_stol(a.stol);
-  if (!(a.traction_tol > 0)) throw InputError("--traction-tol must be > 0 [MPa]");
+  if (!(a.traction_tol > 0) || !std::isfinite(a.traction_tol))
+    throw InputError("--traction-tol " + input_number(a.traction_tol) +
+                     " violates the rule: a finite tolerance > 0 [MPa]");
+  check_output_file(a.out, "--out");
   check_solver_options({a.solver, a.points_given, a.block_given, a.max_cuts_given, a.print_residuals, a.points,
                         a.block, a.max_cuts});
   return a.solver == "implicit" ? run_implicit(a, err) : run_explicit(a, err);

@@ -7,6 +7,7 @@
 
 #include "input/input_error.hpp"
 #include "input/scene_file.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
 #include "output/scene_csv.hpp"
@@ -24,10 +25,7 @@ void check_args(const SceneArgs& a) {
   if (a.block < 1 || a.block > 136)
     throw InputError("--block " + std::to_string(a.block) +
                      " violates the rule: 1 <= block <= 136 (Abaqus/Explicit's largest nBlock)");
-  namespace fs = std::filesystem;
-  if (fs::exists(a.out) && !fs::is_directory(a.out))
-    throw InputError("--out " + a.out + ": exists and is not a directory");
-  fs::create_directories(a.out);
+  prepare_output_folder(a.out, "--out");
 }
 
 // Magnification of the pictures: the largest body displacement drawn as a
@@ -70,7 +68,7 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   const std::string summary = scene_summary(spec, model, r, last);
   {
     std::ofstream f(args.out + "/summary.txt");
-    if (!f) throw InputError(args.out + "/summary.txt: cannot open the file for writing");
+    if (!f) throw InputError(cannot_write(args.out + "/summary.txt"));
     f << summary;
   }
   out << summary << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv ("

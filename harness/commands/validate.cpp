@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
@@ -11,6 +12,7 @@
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
 #include "output/flag_tally.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
 #include "solvers/explicit_run.hpp"
@@ -83,7 +85,7 @@ class Validation {
  private:
   static void write_curve(const std::string& path, const std::vector<Sample>& curve) {
     std::ofstream out(path);
-    if (!out) throw InputError(path + ": cannot open the file for writing");
+    if (!out) throw InputError(cannot_write(path));
     write_run_header(out);
     for (const Sample& s : curve) write_run_row(out, s);
   }
@@ -144,8 +146,11 @@ void print_table(std::ostream& out, const std::vector<CaseOutcome>& cases) {
 }  // namespace
 
 int run_validation(const ValidateOptions& o, std::ostream& out, std::ostream& err) {
+  if (!(o.traction_tolerance > 0) || !std::isfinite(o.traction_tolerance))
+    throw InputError("--traction-tol " + input_number(o.traction_tolerance) +
+                     " violates the rule: a finite tolerance > 0 [MPa]");
   const std::vector<SeriesSpec> series = read_calibration_data(o.data_dir, o.series);
-  fs::create_directories(o.out_dir);
+  prepare_output_folder(o.out_dir, "--out");
   Validation validation(o, err);
   std::vector<CaseOutcome> outcomes;
   std::vector<std::string> charts;

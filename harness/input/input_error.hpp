@@ -16,4 +16,8 @@ class InputError : public std::runtime_error {
 // "file:line" (or "file" when the line is unknown, line <= 0).
 std::string file_position(const std::string& file, int line);
 
+// A number as the user gave it, for a message: 9 significant digits, and
+// nan or inf spelt out.
+std::string input_number(double x);
+
 }  // namespace mortar::harness

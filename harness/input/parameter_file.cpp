@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "input/toml_input.hpp"
+#include "output/output_paths.hpp"
 
 namespace mortar::harness {
 
@@ -99,7 +100,7 @@ ParameterSet read_parameter_file(const std::string& path) {
 
 void write_parameter_file(const std::string& path, const Parameters& p, const std::vector<std::string>& header) {
   std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot open the file for writing");
+  if (!out) throw InputError(cannot_write(path));
   for (const std::string& line : header) out << "# " << line << "\n";
   for (int i = 0; i < kParameterCount; ++i) {
     const double x = parameter_at(p, i);

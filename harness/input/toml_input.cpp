@@ -1,6 +1,10 @@
 #include "input/toml_input.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -11,9 +15,20 @@ std::string file_position(const std::string& file, int line) {
   return line > 0 ? file + ":" + std::to_string(line) : file;
 }
 
+std::string input_number(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
 toml::value parse_toml_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a folder; a TOML file is needed");
+  if (!std::filesystem::exists(path, ec)) throw InputError(path + ": no such file");
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open the file for reading");
+  if (!in) throw InputError(path + ": cannot open the file for reading (" + std::strerror(errno) + ")");
   try {
     return toml::parse(in, path);
   } catch (const toml::syntax_error& e) {

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 
 namespace mortar::harness {
 
@@ -129,7 +130,7 @@ CsvTable read_csv(const std::string& path) {
 void write_csv(const std::string& path, const std::vector<std::string>& header,
                const std::vector<std::vector<double>>& rows) {
   std::ofstream out(path);
-  if (!out) throw InputError(path + ": cannot open the file for writing");
+  if (!out) throw InputError(cannot_write(path));
   const char* sep = "";
   for (const std::string& h : header) {
     out << sep << h;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 
 namespace mortar::harness {
 
@@ -107,7 +108,7 @@ std::string write_plot_script(const std::string& out_dir, const SeriesSpec& seri
                               const std::vector<PlotCase>& cases) {
   const std::string name = series.id + ".gp";
   std::ofstream g(out_dir + "/" + name);
-  if (!g) throw InputError(out_dir + "/" + name + ": cannot open the file for writing");
+  if (!g) throw InputError(cannot_write(out_dir + "/" + name));
   g << "# " << series.title << "\n# Written by masonry-joint validate; rerun with: gnuplot " << name << "\n"
     << "set datafile separator \",\"\n"
     << "travel = 0; last_slip = 0  # running sums of the unrolled cyclic panel\n";

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 
 namespace mortar::harness {
 
@@ -12,7 +13,7 @@ namespace {
 
 std::ofstream open_for_writing(const std::string& path) {
   std::ofstream f(path);
-  if (!f) throw InputError(path + ": cannot open the file for writing");
+  if (!f) throw InputError(cannot_write(path));
   f.precision(10);
   return f;
 }

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "input/input_error.hpp"
+#include "output/output_paths.hpp"
 #include "output/plots.hpp"
 
 namespace mortar::harness {
@@ -55,7 +56,7 @@ std::string write_scene_plot_script(const std::string& dir, const std::vector<st
                                     double magnification) {
   const std::string name = "scene.gp";
   std::ofstream g(dir + "/" + name);
-  if (!g) throw InputError(dir + "/" + name + ": cannot open the file for writing");
+  if (!g) throw InputError(cannot_write(dir + "/" + name));
   g << "# Written by masonry-joint scene; rerun with: gnuplot " << name << "\nset datafile separator \",\"\n"
     << "set grid lc rgb \"#c8c8c8\"\n";
   for (const char* ext : {"png", "svg"}) {
