@@ -10,6 +10,9 @@ namespace mortar {
 namespace {
 
 constexpr double kTiny = 1e-300;
+// The local error of a closed joint's softening factor is relative to what is
+// left of it down to this share of the strength (docs/model.md 7.1).
+constexpr double kClosedStrengthFloor = 1e-5;
 // Implicit scheme: Newton iterations (all local solves) allowed per increment,
 // per substep of the budget props(18) (docs/model.md 9), so that the budget
 // bounds this scheme's work too. A smooth increment takes 3-10; at the
@@ -140,11 +143,16 @@ double ModifiedEuler::local_error(const Point& P, const Rates& r1, const Rates& 
   // (towards complete separation, kSeparated) an absolute error lets the
   // place of the separation depend on the cuts (docs/model.md 7.1). A joint
   // already fully softened (s_raw <= 0 at the start) keeps s = 0 whatever
-  // the works do, so nothing of the surface is in error there.
+  // the works do, so nothing of the surface is in error there. A closed
+  // joint has no separation to place, and its mode-II work rate, (|tau| -
+  // <-sigma_n> tan(phi)) q, is a difference of traction-scale terms of size
+  // s c0: relative to s alone, the error would hold the traction's own error
+  // to STOL s c0, thousands of substeps per call as s runs towards 0. Below
+  // kClosedStrengthFloor it is measured against that floor.
   const bool softened = 1.0 - P.y.wI / M_.p.GIC - P.y.wII / M_.p.GIIC <= 0;
-  const double e_s = softened ? 0.0
-                              : 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) /
-                                    std::max(S.s, kSeparated);
+  const double left = std::max(S.s, P.y.open ? kSeparated : kClosedStrengthFloor);
+  const double e_s =
+      softened ? 0.0 : 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) / left;
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
   return std::max(e_sigma, std::max(e_s, e_t));
 }
