@@ -3,18 +3,7 @@
 // signs meet the law's) and runs the adapters' skeleton (adapter/guard.hpp).
 // Compiled once per precision (mj_real = float, or double with
 // MJ_DOUBLE_PRECISION); the law itself always runs in double precision.
-//
-// The state of point k is state(:,1,k): the first node state of the point,
-// in the layout of mortar::slot.
-//
-// Errors never cross the boundary as exceptions or silent exits. A bad
-// argument or property: a message on stderr naming the interaction, the
-// argument or property, its value and the rule, then Abaqus's exit utility
-// XPLB_EXIT. In the standalone build (MJ_STANDALONE, used by the harness and
-// the tests) there is no exit utility: the outputs are left finite (stress and
-// sed as they came in), and every point of the block gets a negative code in
-// SDV 21 (status); a point whose increment the law rejects keeps its start
-// state with the law's positive Failure code there.
+// The rest: docs/adapters.md, section 9.
 #include "vuinteraction.h"
 
 #include "adapter/explicit_routines.hpp"

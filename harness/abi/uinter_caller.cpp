@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

@@ -5,9 +5,8 @@
 #include <cmath>
 
 #include "abi/vuinteraction_call.hpp"
-#include "mortar/state.hpp"
-#include "mortar/physics/elasticity.hpp"
-#include "mortar/physics/yield_surface.hpp"
+#include "mortar/state_layout.hpp"
+#include "mortar/integrator.hpp"
 
 namespace mortar::harness {
 
@@ -70,7 +69,7 @@ CallTime call_info(long increment, long increments) {
 double surface_ratio(const Model& M, const AbiBlock& abi, const Vec3& sigma) {
   State y;
   load_state(abi.state(0), y);
-  return yield_function(sigma, surface_of(M, y)) / yield_tolerance(M, sigma);
+  return mortar::yield_ratio(M, y, sigma);
 }
 
 Snapshot snapshot_of(AbiBlock& abi, int k) {

@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 
 #include "mortar/parameters.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

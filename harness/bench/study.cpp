@@ -14,6 +14,7 @@
 #include "bench/plots.hpp"
 #include "input/input_error.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "validation/checks.hpp"

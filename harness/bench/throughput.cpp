@@ -15,7 +15,7 @@
 #include "bench/drive.hpp"
 #include "bench/throughput_call.hpp"
 #include "input/parameter_file.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "vuinteraction.h"
 
 namespace mortar::harness {
@@ -461,7 +461,7 @@ std::string throughput_report(const ThroughputResult& r) {
       worst_threads = std::min(worst_threads, scaling(w));
   }
   auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
-  o << "\ntargets (issue 13), worst case over the rows:\n"
+  o << "\ntargets, worst case over the rows:\n"
     << "- elastic / copy <= 2: " << fixed(worst_copy, 2) << ", " << verdict(worst_copy <= 2) << "\n"
     << "- sliding / elastic <= 10: " << fixed(worst_sliding, 2) << ", " << verdict(worst_sliding <= 10) << "\n"
     << "- 2 threads >= 1.8 x 1 thread (law workloads): " << fixed(worst_threads, 2) << ", "

@@ -2,7 +2,7 @@
 
 #include "commands/run.hpp"
 #include "input/parameter_file.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
 
 namespace mortar::harness {

@@ -1,5 +1,5 @@
 // An in-plane masonry wall as rigid blocks joined by zero-thickness
-// interfaces (issue 12): the units, enlarged by half a joint on each side as
+// interfaces: the units, enlarged by half a joint on each side as
 // in discrete-element practice, are rigid bodies with three degrees of
 // freedom (ux, uy, rotation about their centroid); every bed and head joint is
 // a row of contact points that vuinteraction_ sees with nDir = 2 (normal and

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "abi/props.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "output/flag_tally.hpp"
 #include "solvers/joint_calls.hpp"
 

@@ -1,4 +1,4 @@
-// The explicit solver of a wall of rigid blocks (issue 12): central
+// The explicit solver of a wall of rigid blocks: central
 // differences in time, as Abaqus/Explicit integrates, with the joints'
 // tractions from vuinteraction_ (solvers/joint_calls.hpp).
 //

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "abi/props.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "scenes/joint_test.hpp"
 
 namespace mortar::harness {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "abi/props.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/scene_run.hpp"
 

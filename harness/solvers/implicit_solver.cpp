@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "abi/status.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

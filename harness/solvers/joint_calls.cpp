@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "abi/status.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

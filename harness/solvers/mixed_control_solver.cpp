@@ -6,7 +6,7 @@
 
 #include "abi/status.hpp"
 #include "abi/vuinteraction_caller.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

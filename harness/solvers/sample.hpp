@@ -7,7 +7,7 @@
 
 #include <Eigen/Core>
 
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

@@ -4,7 +4,7 @@
 #include <chrono>
 #include <vector>
 
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 

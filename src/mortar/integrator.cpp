@@ -6,8 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "mortar/integration/elastic_shortcut.hpp"
 #include "mortar/integration/increment.hpp"
+#include "mortar/physics/elasticity.hpp"
+#include "mortar/physics/yield_surface.hpp"
 
 namespace mortar {
 
@@ -140,7 +141,7 @@ void integrate_with(const Model& M, State& state, const Vec3& d, Mat3* tangent, 
 // without the machinery (the explicit routines ask for no tangent; most of
 // their increments, and the fallback chain's pieces, are elastic).
 void attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, IncrementResult& res, bool shortcut = true) {
-  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return;
+  if (MORTAR_FAST_PATHS && shortcut && !tangent && elastic_increment(M, state, d, res)) return;
   TangentTracker tracker;
   // The scheme is chosen once per increment; each lives on the stack.
   switch (M.controls.scheme) {
@@ -164,10 +165,8 @@ void attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, Increme
 // iterations, regime segments, relaxation steps) are per increment, and the
 // step the schemes or the return at fixed separation could not take may be
 // within reach of a shorter piece or of another scheme: the law's answer does
-// not depend on how the path is cut. Bad input (an invalid state, a
-// non-finite increment) is refused as it came; a result beyond the
-// floating-point range is a property of the end point, which every way
-// through the increment reaches.
+// not depend on how the path is cut. Bad input (an invalid state, a ...
+// The rest: docs/numerics.md, section 11.
 bool can_fall_back(Failure f) {
   switch (f) {
     case Failure::too_many_substeps:
@@ -189,12 +188,8 @@ bool can_fall_back(Failure f) {
 // (docs/model.md 9): modified Euler over 8 pieces integrates every
 // backward-Euler failure and most modified-Euler ones, 64 pieces most of the
 // rest, and forward Euler, which has no error control to exhaust, the few
-// left. Backward Euler itself (cut or not) and a tighter STOL integrate fewer
-// at a higher cost and are not rungs.
-// Each rung's bit of integration_flag (SDV 35). The last rung has no error
-// control nor drift correction: its end point must be on or inside the
-// surface (`checked`), within the 10 FTOL invariant 10 allows the schemes
-// with a drift correction, or the rung has failed (docs/model.md 9).
+// left. Backward Euler itself (cut or not) and a tighter STOL integrate fewer ...
+// The rest: docs/numerics.md, section 12.
 struct Rung {
   Scheme scheme;
   int pieces;
@@ -316,7 +311,7 @@ IncrementResult integrate(const Model& M, State& state, const Vec3& d, Mat3* tan
     fail(M, state, res, Failure::non_finite_increment, tangent);
     return res;
   }
-  if (shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
+  if (MORTAR_FAST_PATHS && shortcut && !tangent && elastic_increment(M, state, d, res)) return res;
   // A failed attempt has left the start state as it was but for the three
   // slots fail() writes: the fallback chain's start is copied only when
   // the chain runs.
@@ -337,8 +332,14 @@ IncrementResult integrate_increment(const Model& M, State& state, const Vec3& d,
   return integrate(M, state, d, tangent, true);
 }
 
-IncrementResult integrate_declined_increment(const Model& M, State& state, const Vec3& d) {
+IncrementResult integrate_full(const Model& M, State& state, const Vec3& d) {
   return integrate(M, state, d, nullptr, false);
 }
+
+double yield_ratio(const Model& M, const State& y, const Vec3& sigma) {
+  return yield_function(sigma, surface_of(M, y)) / yield_tolerance(M, sigma);
+}
+
+double softening_factor(const Model& M, const State& y) { return surface_of(M, y).s; }
 
 }  // namespace mortar

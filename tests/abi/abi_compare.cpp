@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+#include "mortar/state_layout.hpp"
 #include "compare_support.hpp"
 
 namespace {

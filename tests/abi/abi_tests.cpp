@@ -18,6 +18,7 @@
 #include "adapter/report.hpp"
 #include "adapter/status_codes.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "mortar/state_pairs.hpp"
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mj_abi_compare {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "abi_support.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "vuinteraction.h"
 
 namespace mj_abi_test {

@@ -9,6 +9,7 @@
 
 #include "abi_support.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "vuinteraction.h"
 
 namespace mj_abi_test {

@@ -16,6 +16,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "mortar/state_layout.hpp"
 #include "one_point.hpp"
 #include "splitting_paths.hpp"
 #include "test_scale.hpp"

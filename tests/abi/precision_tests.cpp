@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "mortar/state_layout.hpp"
 #include "one_point.hpp"
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"

@@ -19,6 +19,7 @@
 #include "adapter/status_codes.hpp"
 #include "explicit_calls.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "vuinteraction.h"

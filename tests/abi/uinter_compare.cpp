@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "mortar/state_layout.hpp"
 #include "compare_support.hpp"
 
 namespace {

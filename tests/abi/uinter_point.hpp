@@ -10,7 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include "abi_support.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "vuinteraction.h"
 
 namespace mj_abi_test {

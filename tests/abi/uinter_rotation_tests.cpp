@@ -16,7 +16,7 @@
 
 #include "abi_support.hpp"
 #include "adapter/status_codes.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "uinter_point.hpp"

@@ -14,6 +14,7 @@
 #include "abi_support.hpp"
 #include "uinter_point.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "vuinteraction.h"

@@ -43,7 +43,7 @@
 
 #include "fuzz_input.hpp"
 #include "mortar/integrator.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "vuinteraction.h"
 

@@ -5,6 +5,7 @@
 // docs/model.md 6), and nothing is dissipated on the way.
 #include <catch2/catch.hpp>
 
+#include "mortar/physics/damage.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 #include "schemes.hpp"

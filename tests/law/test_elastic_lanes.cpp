@@ -8,7 +8,9 @@
 #include <cstring>
 #include <random>
 
+#include "mortar/batch.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "random_parameters.hpp"
 
 #if MORTAR_ELASTIC_LANES

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "schemes.hpp"
 

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "mortar/integrator.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 using namespace mortar;
 

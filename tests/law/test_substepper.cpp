@@ -6,6 +6,7 @@
 
 #include "mortar/integration/substepper.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 
 using namespace mortar;

@@ -12,6 +12,7 @@
 
 #include "mortar/integration/rate_statement.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"

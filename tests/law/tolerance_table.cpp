@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 
 using mortar::Model;

@@ -15,8 +15,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
-#include "mortar/physics/elasticity.hpp"
-#include "mortar/physics/yield_surface.hpp"
+#include "mortar/state_layout.hpp"
 #include "mortar/state_pairs.hpp"
 #include "random_parameters.hpp"
 #include "stderr_capture.hpp"

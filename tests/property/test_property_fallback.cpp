@@ -70,8 +70,7 @@ void step(const mortar::Model& M, State& s, const Vec3& d, Tally& t) {
   if (mortar::check_state(s)) ++t.invalid;
   if (s.dn < before.dn || s.ds < before.ds) ++t.damage_decreased;
   if (M.controls.scheme != Scheme::forward_euler && r.status.ok() && !r.status.fell_back()) {
-    const double F = mortar::yield_function(r.traction, mortar::surface_of(M, s));
-    if (F > 10 * mortar::yield_tolerance(M, r.traction)) ++t.off_surface;
+    if (mortar::yield_ratio(M, s, r.traction) > 10) ++t.off_surface;
   }
 }
 
@@ -86,7 +85,7 @@ void worn_path(const mortar::Model& M, std::mt19937& rng, Tally& t) {
   const double target = log_uniform(rng, 1e-6, 1e-2);
   const double angle = uniform(rng, 0, 2 * M_PI);
   State s;
-  for (int i = 0; i < 400 && mortar::surface_of(M, s).s > target; ++i) {
+  for (int i = 0; i < 400 && mortar::softening_factor(M, s) > target; ++i) {
     const double slip = uniform(rng, 0.2, 1.0) * us;
     step(M, s, Vec3(uniform(rng, 0.0, 0.1) * un, slip * std::cos(angle), slip * std::sin(angle)), t);
   }

@@ -103,10 +103,9 @@ void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int 
       // state (the stress output is that rounded to float).
       if (scheme != mortar::Scheme::forward_euler) {
         const mortar::Vec3 start = kSingle ? mortar::traction_of(model, s) : sigma;
-        const double F = mortar::yield_function(start, mortar::surface_of(model, s));
-        const double tol = mortar::yield_tolerance(model, start);
-        t.worst_yield_ratio = std::max(t.worst_yield_ratio, F / tol);
-        if (F > 10 * tol) ++t.off_surface;
+        const double ratio = mortar::yield_ratio(model, s, start);
+        t.worst_yield_ratio = std::max(t.worst_yield_ratio, ratio);
+        if (ratio > 10) ++t.off_surface;
       }
       const double dw = 0.5 * (sigma_old[k] + sigma).dot(d_sep[k]);
       work[k] += dw;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 
 namespace mortar::testing {

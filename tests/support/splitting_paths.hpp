@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
 #include "random_parameters.hpp"
 

@@ -10,6 +10,7 @@
 #include "adapter/report.hpp"
 #include "adapter/status_codes.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mj_adapter {
 
@@ -87,7 +88,7 @@ mortar::ValidationError read_setup(const Real* props, int n_props, const Default
 // read_setup through the last props this thread read with the same defaults:
 // Abaqus calls an interaction's routine with one props array increment after
 // increment, and reading it anew (Table 1's rules, make_model's tangents)
-// costs about 2 300 instructions per call, 18-21 per point of a block of 128
+// costs as much as a good share of a block's elastic updates
 // (docs/bench/throughput.md). Only props that passed are kept, so a bad array
 // is read and reported at every call; the key is their bits (props(1..20))
 // and the defaults, on which the setup alone depends. Per thread: Abaqus/

@@ -2,33 +2,7 @@
 // in either precision (Real = mj_real); the law itself always runs in double
 // precision. This is where Abaqus/Explicit's conventions meet the law's
 // (docs/abaqus.md; law signs: docs/model.md 1):
-//
-//   normal   delta_n = (reference penetration) - penetration, the reference
-//            being the penetration at the point's first call (stored in SDV 22,
-//            SDV 23 = 1 once set). drDisp(1) is not used: its sign relative to
-//            the penetration is not pinned down by the manual.
-//   shear    the slips are the running sum of drDisp(2..nDir) (VUINTER:
-//            drdisp(2..nDir)); the first call contributes nothing, because the
-//            first call defines the zero (docs/model.md 1).
-//   rotation in 3D the tangential components of the stored vectors (plastic,
-//            crack and total separation) are first turned by dRot (VUINTER:
-//            drot) into this increment's tangent directions, whose components
-//            drDisp already has (adapter/rotation.hpp); a 2D joint has one
-//            tangent and nothing to turn, and dRot is not read.
-//   stress   stress(1) = -sigma_n (Abaqus: pressure positive; law: tension
-//            positive); stress(2..nDir) = shear_sign * tau, shear_sign = -1
-//            unless props(20) = +1 (see docs/abaqus.md for why, and how to
-//            check it against a release).
-//   energies sed = elastic energy per unit area at the end of the increment;
-//            spd = increment of all inelastic energy of the law (plastic +
-//            damage + unilateral, so that the balance closes); sfd = scd =
-//            svd = 0; fluxes 0.
-//   state    the layout of mortar::slot (23 values; positions 1-14 as
-//            docs/model.md 3); in single precision with DEPVAR >= 34 the
-//            accumulating variables as float pairs (adapter/state_storage.hpp).
-//   failure  a point whose increment the law rejects keeps its start state
-//            with the law's positive Failure code in SDV 21; the first few
-//            are reported on stderr, and the analysis stops.
+// The rest: docs/adapters.md, section 1.
 #pragma once
 
 #include <algorithm>
@@ -37,10 +11,17 @@
 #include <limits>
 
 #include "adapter/arguments.hpp"
+#include "adapter/path_counters.hpp"
 #include "adapter/report.hpp"
 #include "adapter/rotation.hpp"
 #include "adapter/state_storage.hpp"
+#include "mortar/batch.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
+
+// The elastic lanes: where the compiler has vector types and the fast paths
+// are built (MJ_FAST_PATHS).
+#define MJ_ELASTIC_LANES (MORTAR_ELASTIC_LANES && MORTAR_FAST_PATHS)
 
 namespace mj_adapter {
 
@@ -151,7 +132,7 @@ struct ExplicitBlock {
       if (failure != 0 && ++failures <= kMaxPointMessages) report_point(who, k, failure);
     };
     int k = 0;
-#if MORTAR_ELASTIC_LANES
+#if MJ_ELASTIC_LANES
     // The points in pairs through the elastic lanes first; a point they do
     // not take goes the way of every other, in the same order.
     using mortar::lanes::kWidth;
@@ -262,10 +243,10 @@ struct ExplicitBlock {
   // the very result integrate_increment would return, and only the slots such
   // an increment changes written, as integrate_point would write them
   // (StateStorage::store_elastic). The state lives in registers here: nothing
-  // takes its address. Returns kNotElastic, having written nothing, for any
+  // takes its address. Returns kTakesFullPath, having written nothing, for any
   // other point, which integrate_point then integrates (loading it again);
   // otherwise integrate_point's return value.
-  static constexpr int kNotElastic = -1;
+  static constexpr int kTakesFullPath = -1;
   int elastic_point(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st) const {
     namespace slot = mortar::slot;
     // mortar::state_valid with its finite test on the array (vector loads;
@@ -276,22 +257,22 @@ struct ExplicitBlock {
     bool rewrite;
     const bool flags = flags_valid(st), pairs = storage.load_elastic(st, s, rewrite),
                finite = all_finite(st, slot::substeps_accepted);
-    if (!(flags & pairs & finite)) return kNotElastic;
-    if (!mortar::state_in_range(s)) return kNotElastic;
+    if (!(flags & pairs & finite)) return kTakesFullPath;
+    if (!mortar::state_in_range(s)) return kTakesFullPath;
     const bool turned = may_turn() && !is_identity(d_rot_of(k));
     if (turned) {
       rotate_tangential_state(d_rot_of(k), s);
       // A turn can overflow a finite vector near the range's end; the law
       // then rejects the state (check_state), which the full path reports.
       const double turned[] = {s.plastic[1], s.plastic[2], s.crack[1], s.crack[2], s.separation[1], s.separation[2]};
-      if (!all_finite(turned, 6)) return kNotElastic;
+      if (!all_finite(turned, 6)) return kTakesFullPath;
     }
     const bool first = st[slot::initialised] == Real(0);
     // A first call replaces SDV 22, whatever it holds; the store's finite
     // test below reads it, so an overflowed one goes the full path.
-    if (first && !std::isfinite(double(st[slot::reference_penetration]))) return kNotElastic;
+    if (first && !std::isfinite(double(st[slot::reference_penetration]))) return kTakesFullPath;
     mortar::IncrementResult r;
-    if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kNotElastic;
+    if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kTakesFullPath;
     // Fixed counts, so that the checks and copies are a few instructions
     // rather than loops: in 2D the third component is not an output.
     Real out[4];
@@ -307,7 +288,7 @@ struct ExplicitBlock {
     return 0;
   }
 
-#if MORTAR_ELASTIC_LANES
+#if MJ_ELASTIC_LANES
   // The elastic shortcut for points k .. k + kWidth - 1 at once
   // (adapter/explicit_block_lanes.hpp).
   unsigned elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const;
@@ -387,6 +368,7 @@ struct ExplicitBlock {
     if (penetration_of(k) <= kUnpairedPenetration) {  // no opposite surface: no interaction
       std::fill(stress_of(k), stress_of(k) + counts.n_dir, Real(0));
       write_energies(k, 0.0, 0.0);
+      MJ_COUNT_PATH(unpaired);
       return 0;
     }
     Real* st = state_of(k);
@@ -394,8 +376,12 @@ struct ExplicitBlock {
     // most likely starts on the surface, where the shortcut can prove
     // nothing (and would spend an exp on a worn joint): it goes the full
     // path at once, which gives the same result.
-    if (st[slot::substeps_accepted] == Real(0))
-      if (const int code = elastic_point(setup, storage, k, st); code != kNotElastic) return code;
+    if (MORTAR_FAST_PATHS && st[slot::substeps_accepted] == Real(0))
+      if (const int code = elastic_point(setup, storage, k, st); code != kTakesFullPath) {
+        MJ_COUNT_PATH(shortcut);
+        return code;
+      }
+    MJ_COUNT_PATH(full);
     if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
     storage.load(st, s);
@@ -405,7 +391,7 @@ struct ExplicitBlock {
     // elastic_point has tried the shortcut on this state and increment (or
     // declined a state the law rejects before it), or the point was plastic
     // and the shortcut is not worth a try: the law does not try it again.
-    const mortar::IncrementResult r = mortar::integrate_declined_increment(setup.model, s, d);
+    const mortar::IncrementResult r = mortar::integrate_full(setup.model, s, d);
     if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
     if constexpr (StateStorage<Real>::kSingle) {
       return store_float(setup, storage, k, st, s, r, first);

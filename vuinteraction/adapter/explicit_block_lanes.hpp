@@ -1,23 +1,12 @@
 // ExplicitBlock's elastic lanes: the elastic shortcut for two points at once
 // (mortar::lanes::elastic_increment_lanes, one point per lane of a vector of
 // doubles), between the solver's arrays and elastic_point's store.
-//
-// A lane takes a point elastic_point would take and that needs none of its
-// special cases: paired, its last increment elastic (SDV 19 = 0), not its
-// first call (SDV 23 = 1), dRot the identity (3D), an unworn joint (w_III =
-// 0: tan(phi) without an exp), every float pair canonical; the state's rules
-// are elastic_point's (flags_valid, one finite test of SDV 1-18, the ranges
-// of mortar::state_in_range). What it books goes out through
-// StateStorage::store_elastic_lane, write_stress and write_energies, as
-// elastic_point's does through store_elastic: the same slots, the same
-// values. Any other point, and a lane whose increment is not proved elastic
-// or whose values may not fit in Real (fits_in_real), is left untouched for
-// integrate_point.
+// The rest: docs/adapters.md, section 2.
 #pragma once
 
 namespace mj_adapter {
 
-#if MORTAR_ELASTIC_LANES
+#if MJ_ELASTIC_LANES
 // The values of the lanes' rules that the increment does not read.
 template <class Real>
 struct ExplicitBlock<Real>::LaneRules {
@@ -75,21 +64,17 @@ mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::El
 // magnitude, so that their conversions to float (the stress, sed, the
 // separation's pairs, whose low parts lie within a spacing of their high
 // parts) are finite, in any rounding mode. (SDV 22, which store_elastic
-// tests too, is finite in a lane proved elastic: its increment is computed
-// from it.) A lane beyond goes to integrate_point, whose store tests the
-// floats themselves (StateStorage::store_elastic): the same points are
-// rejected, or stored with the same values. Compared in double, two points at once: the same
-// test on the floats, point by point, took 50 of the single-precision
-// elastic update's 521 instructions, and 7 % of its time.
+// tests too, is finite in a lane proved elastic: its increment is computed ...
+// The rest: docs/adapters.md, section 3.
 template <class Real>
 mortar::lanes::Mask ExplicitBlock<Real>::fits_in_real(const mortar::lanes::ElasticLaneResult& r) {
   if constexpr (!StateStorage<Real>::kSingle) {
     return r.elastic;  // a finite double is itself
   } else {
-    using mortar::magnitude;
+    using mortar::abs_of;
     const double most = std::numeric_limits<float>::max();
-    mortar::lanes::Mask fits = r.elastic && magnitude(r.energy) <= most;
-    for (int i = 0; i < 3; ++i) fits = fits && magnitude(r.separation[i]) <= most && magnitude(r.traction[i]) <= most;
+    mortar::lanes::Mask fits = r.elastic && abs_of(r.energy) <= most;
+    for (int i = 0; i < 3; ++i) fits = fits && abs_of(r.separation[i]) <= most && abs_of(r.traction[i]) <= most;
     return fits;
   }
 }
@@ -122,6 +107,7 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
     storage.store_elastic_lane(s, out, st);
     write_stress(k + l, out);
     write_energies(k + l, double(out[3]), 0.0);  // spd: no dissipation
+    MJ_COUNT_PATH(lanes);
     done |= 1u << l;
   }
   return done;

@@ -38,11 +38,7 @@ struct Routine {
 //                                  the declared arrays reach;
 //   int check_points(const Caller&, const ArgumentNames&)
 //                                  the per-point arguments' rules (dRot):
-//                                  reports the first break, returns its
-//                                  code or 0;
-//   bool integrate(const Caller&, const Setup&)
-//                                  the law over the call's points; false when
-//                                  the analysis must stop.
+// The rest: docs/adapters.md, section 4.
 template <class Call>
 void run_call(const Routine& routine, const char* surf_int, int surf_int_length, Call& call) noexcept {
   const Caller who = make_caller(routine.name, surf_int, surf_int_length);

@@ -3,19 +3,7 @@
 // then applied to the tangential components of the state's vectors before the
 // law integrates, so that a joint whose tangent directions turn keeps its
 // traction direction (docs/abaqus.md, "Rotating tangent directions").
-//
-// Convention: the stored (s1, s2) components v of every in-plane vector become
-// dRot v, dRot(i,j) read as row i, column j of the Fortran array (column-major:
-// drot[0] = dRot(1,1), drot[1] = dRot(2,1), drot[2] = dRot(1,2), drot[3] =
-// dRot(2,2)): a turn of the directions by phi (t1 towards t2) is expected as
-// [cos phi, sin phi; -sin phi, cos phi]. This is how the Abaqus User
-// Subroutines Reference Guide has user routines apply a rotation increment to
-// vector-valued state (its UMAT: DROT v, and DROT A DROT^T for tensors; its
-// UINTER, VUINTER, VUINTERACTION entries: the rotation of the tangent
-// directions, for rotating such state), and, for UINTER, what Abaqus has
-// already done to the accumulated slips RDISP(2..3). [transcribed]: the
-// sources and how to check a release are in docs/abaqus.md, "Rotating
-// tangent directions".
+// The rest: docs/adapters.md, section 5.
 #pragma once
 
 #include <cmath>
@@ -23,7 +11,7 @@
 #include <initializer_list>
 
 #include "adapter/report.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mj_adapter {
 

@@ -4,53 +4,7 @@
 // keeps what the call returns only when the increment converges. This is
 // where Abaqus/Standard's conventions meet the law's (docs/abaqus.md, "Using
 // it in Abaqus/Standard"; law signs: docs/model.md 1):
-//
-//   normal   RDISP(1) > 0 is a penetration, < 0 a gap, at the END of the
-//            increment (current iteration); DRDISP its increment. The zero of
-//            the law's separation is the position at the start of the first
-//            increment in which the point is seen (SDV 22 = RDISP(1) -
-//            DRDISP(1) then, SDV 23 = 1): the same in every iteration of that
-//            increment, so repeating the call cannot move it. delta_n =
-//            SDV 22 - RDISP(1), opening positive.
-//   shear    RDISP(2..NDIR) are the accumulated slips from the beginning of
-//            the analysis; the law's slips are these totals, so the increment
-//            is RDISP(2..) - SDV 13..14 (a joint is bonded from the start of
-//            the analysis in shear).
-//   rotation Abaqus has turned RDISP(2..3) by DROT into this increment's
-//            tangent directions; in 3D the stored vectors (plastic, crack and
-//            total separation) are turned the same way before the increment
-//            is formed (adapter/rotation.hpp), else a turn of the directions
-//            would read as slip. 2D: one tangent, DROT is not read. A
-//            perturbation step does not read it either: the base state's
-//            secant stiffness is the same in every tangent direction.
-//   stress   STRESS(1) = -sigma_n (pressure positive); STRESS(2..NDIR) =
-//            shear_sign * tau with shear_sign = +1 unless props(20) = -1 (the
-//            convention of public working UINTER code, STRESS(2) = +K
-//            RDISP(2)).
-//   tangent  DDSDDR = d STRESS / d RDISP = C T D with T = d sigma / d delta
-//            the law's tangent (the consistent tangent of the implicit
-//            scheme, docs/model.md 7.5), C = diag(-1, s, s) and D =
-//            d delta / d RDISP = diag(-1, 1, 1). It is not symmetric
-//            (non-associated flow, softening): use UNSYMM=YES on *SURFACE
-//            INTERACTION.
-//   scheme   props(15) = 0 (or absent) selects the implicit scheme here (the
-//            only one with a consistent tangent); 1 or 2 run an explicit
-//            scheme with its continuum tangent.
-//   energies SED elastic energy at the end; SPD increment of plastic + damage
-//            + unilateral energy; SFD = SVD = SCD = 0; FLUX, DDFDDT, DDSDDT,
-//            DDFDDR = 0 (no heat, no temperature dependence).
-//   failure  the law rejects the increment (e.g. the local Newton fails at
-//            its smallest substep): PNEWDT = 0.5 (Abaqus retries with half
-//            the time increment), outputs finite (start traction, start
-//            secant stiffness, start state with the code in SDV 21), one line
-//            on stderr naming the interaction and node.
-//   LINPER   in a linear perturbation step the inputs are perturbations:
-//            DDSDDR is the tangent of the base state for a zero increment
-//            (its secant stiffness), STRESS = DDSDDR DRDISP, the state is not
-//            changed.
-//
-// Nothing here keeps mutable global or static state: every output is a
-// function of the arguments of this call alone.
+// The rest: docs/adapters.md, section 6.
 #pragma once
 
 #include <algorithm>
@@ -61,6 +15,7 @@
 #include "adapter/report.hpp"
 #include "adapter/rotation.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mj_adapter {
 

@@ -2,18 +2,7 @@
 // the solver's array of their precision (docs/model.md 3).
 //
 //   double   the 23 slots of mortar::slot; slots beyond them are not touched.
-//   float    with DEPVAR >= 34, the variables that accumulate and feed back
-//            into the traction (plastic separation, works, damages, total
-//            separation) as float pairs: the value rounded to float in its
-//            own slot, the remainder in SDV 24-34 (mortar::low_slot). A float
-//            alone has a spacing of 4e-9 mm at 0.05 mm, so increments below
-//            it are lost or rounded away and softening stalls at the
-//            increments Abaqus/Explicit takes; the pair keeps about 48 bits.
-//            With DEPVAR 23..33, plain floats, and one warning per process.
-//   both     with DEPVAR >= 35, the integration flags in SDV 35
-//            (mortar::flag_slot), OR'd by the law over the point's history;
-//            an elastic increment raises none, so the elastic paths never
-//            touch the slot.
+// The rest: docs/adapters.md, section 7.
 #pragma once
 
 #include <algorithm>
@@ -23,7 +12,7 @@
 
 #include "adapter/report.hpp"
 #include "mortar/finite.hpp"
-#include "mortar/integration/lanes.hpp"
+#include "mortar/batch.hpp"
 #include "mortar/state_pairs.hpp"
 
 namespace mj_adapter {
@@ -102,14 +91,7 @@ struct StateStorage {
 #endif
 
   // What store() changes after an elastic increment (mortar::elastic_increment):
-  // the separation (SDV 12-14), the open flag, the counts and status (SDV
-  // 19-21) and, when dRot turned them (`turned`), the tangential components
-  // (SDV 2-3, 5-6); the value store() would write into any other slot is the
-  // one it read (a finite Real, to double and back; with float pairs, a
-  // canonical pair from load_elastic(), unless `rewrite`, which rewrites
-  // every slot store() writes). False, with nothing written, when a value or
-  // one of the point's `outputs` (stress and sed in Real, computed by the
-  // caller) does not fit in Real (the full path's rejection).
+  // The rest: docs/adapters.md, section 8.
   bool store_elastic(const mortar::State& s, bool turned, bool rewrite, const Real (&outputs)[4], Real* st) const {
     namespace slot = mortar::slot;
     if constexpr (kSingle) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mj_adapter {
 

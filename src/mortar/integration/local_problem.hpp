@@ -51,10 +51,7 @@ struct LocalUnknowns {
 //
 //   sigma = sigma_P + k_sep o dd - dl k_flow o m(sigma, kappa)     (Eq. 16-17, end-point flow)
 //   F(sigma, kappa) = 0                                            (Eq. 2, consistency at the end)
-//   kappa = kappa_P + dl g(sigma, kappa)                           (Eqs. 7-9 at the end point)
-//
-// with kappa = (wI, wII, wIII), m the flow direction of Eq. 10 (regularised,
-// normal part blended; flow_of) and g the works per unit lambda.
+// The rest: docs/numerics.md, section 4.
 struct LocalProblem {
   Vec3 sigma_trial = Vec3::Zero();  // sigma_P + k_sep o dd
   Vec3 k_flow = Vec3::Zero();       // stiffness multiplying m dl (rate_stiffness().on_flow)
@@ -94,14 +91,7 @@ Vec7 local_residual(const Model& M, const LocalProblem& lp, const Vec7& x, Mat7*
 // backtracking (Armijo) line search on 1/2 |r|^2, converged when the scaled
 // residual is below 1e-12, or below `tolerance` once it stops falling
 // (round-off). Starts, in turn, until one converges:
-//   1. from `predictor` if given (the integrator passes the forward-Euler
-//      predictor, O(dd^2) from the solution on a smooth path);
-//   2. from the trial point (sigma_trial, dl = 0, kappa_start);
-//   3. bisection fallback: the multiplier bracketed on the reduced problem
-//      f(dl) = F(sigma(dl), kappa(dl)), the traction and work rows solved for
-//      fixed dl, f(0) > 0 marched up to a sign change and closed by regula
-//      falsi with bisection; then Newton again from there.
-// `iterations` counts every Newton iteration, inner ones included.
+// The rest: docs/numerics.md, section 5.
 struct LocalSolution {
   Vec7 x = Vec7::Zero();
   Mat7 jacobian = Mat7::Zero();  // at x (for the consistent tangent)

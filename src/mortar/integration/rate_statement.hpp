@@ -46,9 +46,7 @@ inline bool snaps_back(const Flow& f) {
 // follows its frozen secant instead. Where the frozen branch has no
 // strain-driven solution, the growing branch stands (settle keeps the damage
 // from decreasing).
-// `allowed`: components that may grow (a Heun pair's second stage keeps
-// frozen what its first stage froze, so that the pair integrates one branch
-// and settle() finds the traction it integrated).
+// The rest: docs/numerics.md, section 6.
 Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed = {});
 // The same with the surface at P, surface_at(M, P), which the substepper
 // carries from one substep to the next.

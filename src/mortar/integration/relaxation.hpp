@@ -15,12 +15,7 @@ namespace mortar {
 // Pegasus inside the last step, so the return never overshoots the surface
 // or passes the apex. For a snap-back (the surface shrinks faster than the
 // traction relaxes: consistency denominator <= 0, so F grows along the flow)
-// it marches on until the point is back on the surface where the denominator
-// is positive again: the drop at fixed separation that a material point under
-// displacement control makes. Counts a relaxation and its steps in `st`;
-// false when no surface point was reached within at most 20 000 steps and
-// what is left of the substep budget, which they spend
-// (Failure::relaxation_failed).
+// The rest: docs/numerics.md, section 7.
 bool relax(const Model& M, Point& P, IntegrationStatus& st, bool snapback);
 
 }  // namespace mortar

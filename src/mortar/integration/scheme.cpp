@@ -91,15 +91,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
 // secant damage rule reads as complete normal damage. Such a substep is
 // rejected and halved (docs/robustness.md). Far: beyond 1e-3 of the traction
 // scale, the larger of |sigma| and ft0.
-//
-// The damage dissipation is booked trapezoidal in delta_e (settle(),
-// docs/model.md 6, Energy), which the Heun pair's estimate, taken before
-// settle(), does not see: past the peak the damage rises steeply while
-// delta_e grows, and a substep over that rise books too much (Atkinson, one
-// call to 5e-4 mm: 1.5 times the damage dissipation of the finely cut path).
-// The difference between the trapezoid and either end's rule,
-// 1/4 k dd |e1^2 - e0^2| per component, relative to the mode's fracture
-// energy, is held to STOL as the traction's error is.
+// The rest: docs/numerics.md, section 8.
 double ModifiedEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) {
   if (switch_here || !(dT > floor_)) return 0;
   if (yield_of(Q, at) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0)) {

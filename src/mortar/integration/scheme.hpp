@@ -35,13 +35,8 @@ struct SchemeTraits {
 // never longer than min_substep L / s_raw, L the material length over which
 // the joint softens (Model::substep_length). A floor that is a fraction of
 // the increment alone grows with the increment, past that length, and the
-// substeps accepted there above STOL book energy the law does not dissipate
-// (docs/model.md 9, large increments). What such a substep can misbook is
-// about its length times the traction, s_raw ft0: the bound holds it to
-// min_substep L ft0 whatever the increment, and lets the floor grow back
-// where little strength is left (and none is to lose), so that a kink in
-// the flow there, which no substep size resolves, costs as few substeps as
-// before. An increment no longer than L keeps min_substep.
+// substeps accepted there above STOL book energy the law does not dissipate ...
+// The rest: docs/numerics.md, section 9.
 inline double min_substep_floor(const Model& M, double n, double s_raw) {
   const double c = M.controls.min_substep, L = M.substep_length, ns = n * s_raw;
   return ns > L ? c * (L / ns) : c;

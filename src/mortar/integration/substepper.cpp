@@ -187,14 +187,8 @@ Substepper::Landing Substepper::separation(const Surface& SN, double& dT) {
 // traction falls towards zero while the joint stays open, and only
 // asymptotically on a worn joint that opens while sliding. What is left is
 // taken as none once it is below kSeparated of a traction scale, as s is at
-// complete separation: ft0, or, while the joint slides, the undamaged
-// traction kn delta_e_n weighted by the shear share of the flow |tau|/R (in
-// mode I the threshold is kSeparated ft0, where the joint separates). Then
-// dn = 1 and the normal stops carrying (rate stiffness 0). Past that kink
-// the Heun pair straddles two rate problems and its error estimate, taken
-// before settle(), cannot see it; so the substep that crosses is shortened to
-// end on it from above (regula falsi on the substep size, bisection as a
-// safeguard), within 1e-9 ft0 below it.
+// complete separation: ft0, or, while the joint slides, the undamaged ...
+// The rest: docs/numerics.md, section 10.
 Substepper::Landing Substepper::normal_completion(const Point& N, const Surface& SN, double& dT) {
   if (!P.y.open || !(P.y.dn < 1) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
   auto g = [&](const Point& X, const ShearRadius& r) {

@@ -79,7 +79,7 @@ inline bool in_apex_zone(const Model& M, const Point& P, const SurfaceAt& at) {
 
 // Round-off scale of the regime boundary delta_e_n = 0 at a state.
 inline double boundary_eps(const Model& M, const State& y) {
-  return 1e-12 * std::max({std::abs(y.separation[0]), std::abs(y.plastic[0]), M.separation_floor});
+  return boundary_eps_of(M, y.separation[0], y.plastic[0]);
 }
 
 }  // namespace mortar

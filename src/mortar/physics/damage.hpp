@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "mortar/elastic.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
@@ -46,13 +47,8 @@ inline bool damage_grows_shear(const Model& M, const State& y, const Vec3& dd, c
 // only approaches 0 asymptotically on a mode-I path (s ~ exp(-delta/u)), so
 // an exact s = 0 is reached only by an integration overshoot, at a place that
 // depends on how the increment is cut. At 1e-7 the traction left is below
-// 1e-7 ft0 (under the 1e-6-of-peak splitting tolerance) and the separation is
-// a well-conditioned point to land a substep on (relative change of s per
-// substep >> round-off). Its place carries the round-off of the summed works
-// (s = 1 - wI/GIC - wII/GIIC: about 1e-13 of wI after 1e5 substeps, amplified
-// by 1/s). Where contact is regained does not depend on it: opening past the
-// separation moves delta_p_n as the growing branch would (follow_opening;
-// the tolerance table of docs/model.md 6).
+// 1e-7 ft0 (under the 1e-6-of-peak splitting tolerance) and the separation is ...
+// The rest: docs/numerics.md, section 13.
 constexpr double kSeparated = 1e-7;
 
 // The normal traction taken as none on the growing branch, relative to a
@@ -113,19 +109,9 @@ struct Branches {
 // and state always agree. The energy released by the damage growth is booked
 // as damage dissipation, 1/2 kbar (delta_e)^2 dd, trapezoidal in delta_e from
 // e_start (the elastic separation at the start of the step).
-// Only the components on their growing branch (`grow`) update their damage:
-// on a frozen secant the ratio |sigma|/(k delta_e) is 0/0 where delta_e
-// passes through zero (a reversal), and its round-off, ratcheted by the
-// irreversibility bound, would make the damage jump.
+// The rest: docs/numerics.md, section 14.
 void settle(const Model& M, State& y, Vec3& sigma, const Vec3& e_start, Branches grow = {});
 
-// Whether an elastic normal separation e_n lies across the regime boundary
-// from a joint in the given regime (Eq. 13: h = 1 for e_n > 0). A template
-// so that the elastic shortcut's lanes (integration/elastic_lanes.hpp) ask it
-// of two points at once: B is a bool or a vector mask, T a double or a vector.
-template <class B, class T>
-inline B crosses(B open, T e_n) {
-  return open ? e_n < 0.0 : e_n > 0.0;
-}
+// crosses(open, e_n): the regime boundary test, mortar/elastic.hpp.
 
 }  // namespace mortar

@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "mortar/elastic.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
@@ -17,18 +18,7 @@ namespace mortar {
 //   closed:                 dsigma = kbar (dd - m dl)
 //   open, damage growing:   dsigma = kbar (dd - (1 + b) m dl)   (the paper's Eq. 16-17)
 //   open, damage frozen:    dsigma = kbar (1 - d) (dd - m dl)   (secant, Eq. 1)
-// The open "growing" branch holds while the secant damage it implies does not
-// decrease; where it would, damage is frozen (it never decreases) and the
-// component follows its secant. A component whose damage is complete carries
-// no traction in the open regime, so both of its stiffnesses are zero.
-//
-// The shear damage is one scalar acting on the slip vector (Eq. 1:
-// tau = ks (1 - ds) delta_e_s), so the traction stays parallel to the elastic
-// slip. On the growing branch only the slip along the elastic slip grows the
-// damage; slip across it turns the traction with the secant ks (1 - ds), as
-// the derivative of Eq. 1 at fixed ds says (docs/model.md 6, Decision - slip
-// across the elastic slip). The flow needs no such split: m_s is parallel to
-// tau, hence to delta_e_s.
+// The rest: docs/numerics.md, section 15.
 struct RateStiffness {
   Vec3 on_separation;  // multiplies the separation increment (along the elastic slip, for the shear)
   Vec3 on_flow;        // multiplies m dl
@@ -95,21 +85,7 @@ inline RateStiffness rate_stiffness_over(const Model& M, const State& y, const V
 }
 
 // Elastic stiffness of Eq. 21 with the unilateral factor h of the regime.
-inline Vec3 secant_stiffness(const Model& M, double dn, double ds, bool open) {
-  const double h = open ? 1.0 : 0.0;
-  return Vec3(M.p.kn * (1 - dn * h), M.p.ks * (1 - ds * h), M.p.ks * (1 - ds * h));
-}
-
-// Eq. 1: the traction is always the secant relation of the current state.
-inline Vec3 traction_of(const Model& M, const State& y) {
-  return secant_stiffness(M, y.dn, y.ds, y.open).cwiseProduct(y.elastic_separation());
-}
-
-// Elastic energy per unit area, 1/2 sigma . (delta - delta_p).
-inline double elastic_energy(const Model& M, const State& y) {
-  const Vec3 e = y.elastic_separation();
-  return 0.5 * secant_stiffness(M, y.dn, y.ds, y.open).cwiseProduct(e).dot(e);
-}
+// secant_stiffness (Eq. 21), traction_of (Eq. 1), elastic_energy: mortar/elastic.hpp.
 
 // Crack-to-plastic ratios per component (Eq. 17: delta_cr = b o delta_p).
 inline Vec3 crack_ratio(const Model& M) { return Vec3(M.p.bn, M.p.bs, M.p.bs); }

@@ -3,20 +3,7 @@
 //  - hypot(x, +-0) is fabs(x) exactly (C11 Annex F.10.4.3), and hypot is
 //    symmetric. A 2D joint has no second shear component, and the fully
 //    softened surface has alpha = 0 (Eq. 3 with s = 0).
-//  - A side at most 2^-26.5 of the other: the correctly rounded length is the
-//    longer side (kNegligibleSide, below), and glibc's hypot returns it.
-//  - A side at most 1.5^0.5 2^-26 of the other: the correctly rounded length
-//    is the longer side or the double after it, and one fused multiply-add
-//    tells which (kOneUlpSide, below). Where that decision is close (within
-//    kOneUlpBand) hypot is called after all: glibc's hypot is not correctly
-//    rounded there (tests/law/test_norms.cpp).
-// On the residual surface alpha = s a is that small against |tau| (Eq. 3,
-// docs/model.md 4): for the Almeida M15 set at 0.5-1.3 MPa after 0.2-3 mm
-// of slip alpha / |tau| is 0.9e-8 to 1.3e-8 (docs/bench/throughput.md).
-// hypot itself rescales against overflow and corrects its square root with a
-// division: about fifty instructions, most of them on the dependency chain
-// of the rate statement (about 15 ns a call on the AMD EPYC host of
-// docs/bench/throughput.md).
+// The rest: docs/numerics.md, section 16.
 #pragma once
 
 #include <cmath>
@@ -42,9 +29,9 @@ inline constexpr double kNegligibleSide = 0x1.6a09e667f3bccp-27;
 // b^2 - a ulp(a) > ulp(a)^2 / 4, past the midpoint a + ulp(a)/2.
 inline constexpr double kOneUlpSide = 0x1.3988e1409212dp-26;
 // Within this many ulp(a)^2 of that midpoint the decision is left to hypot.
-// glibc's hypot (2.36) rounds the wrong way up to 1.75 ulp(a)^2 from it
-// (245 130 of 20 000 000 pairs drawn close to it; none farther out), as its
-// first square root of a^2 + b^2 is rounded. Outside the band the decision
+// The C library's hypot may round the wrong way up to 1.75 ulp(a)^2 from it,
+// its first square root of a^2 + b^2 being rounded (docs/numerics.md,
+// section 16). Outside the band the decision
 // is exact: b^2 - a ulp(a) is rounded once by the fused multiply-add, the
 // bounds (0.25 +- kOneUlpBand) ulp(a)^2 are doubles, and rounding is monotonic.
 inline constexpr double kOneUlpBand = 8;

@@ -14,18 +14,13 @@
 
 #include <Eigen/Core>
 
+#include "mortar/elastic.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/physics/norms.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
 
-using Mat3 = Eigen::Matrix3d;
-
-// exp(x), which is +0 for every x below ln(2^-1075) = -745.1332...: returned
-// directly there, since glibc's exp takes its slow underflow path (errno) to
-// the same +0 (heavy wear, large m or n, Eq. 6). NaN goes to exp as before.
-inline double exp_or_zero(double x) { return x < -745.14 ? 0.0 : std::exp(x); }
 
 // Current size of the surface, from the inelastic works.
 struct Surface {
@@ -52,7 +47,7 @@ inline void shape_into(const Model& M, double wI, double wII, double wIII, Surfa
   S.tan_psi = 0;
   S.s_raw = 1.0 - wI / p.GIC - wII / p.GIIC;
   S.s = std::max(0.0, S.s_raw);
-  S.tan_phi = M.tan_phir + (M.tan_phi0 - M.tan_phir) * exp_or_zero(-p.m * wIII);
+  S.tan_phi = tan_phi_of(M, wIII);
   // Eq. 3 solved for alpha, beta: beta - alpha = ft*tanphi,
   // beta + alpha = c^2/(ft*tanphi); with ft = s*ft0, c = s*c0 both scale with s.
   const double t = S.tan_phi, C = M.cohesion_term, f = p.ft0;
@@ -162,9 +157,7 @@ void fill_derivatives(const Model& M, const Vec3& sigma, const Surface& S, const
 //
 // k_flow is the stiffness that multiplies the flow in the rate statement:
 // the traction changes by -k_flow . m per unit lambda (see RateStiffness).
-// With `derivatives` the same evaluation also fills the derivatives of the
-// flow direction and the work rates (one code path for values and slopes).
-// `radius`: shear_radius(sigma, S), when the caller has it.
+// The rest: docs/numerics.md, section 17.
 inline Flow flow_of(const Model& M, const Vec3& sigma, const Surface& S, const Vec3& k_flow, const ShearRadius& radius,
                     LocalDerivatives* derivatives = nullptr) {
   assert(S.has_psi);

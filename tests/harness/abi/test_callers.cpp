@@ -9,7 +9,7 @@
 #include "abi/props.hpp"
 #include "abi/uinter_caller.hpp"
 #include "abi/vuinteraction_caller.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;

@@ -5,6 +5,7 @@
 #include "abi/props.hpp"
 #include "abi/status.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/state_layout.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;

@@ -21,7 +21,7 @@
 #include "abi/props.hpp"
 #include "commands/run.hpp"
 #include "mortar/integrator.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "solvers/implicit_run.hpp"
 #include "support.hpp"
 

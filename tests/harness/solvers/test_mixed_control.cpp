@@ -10,7 +10,7 @@
 #include "abi/props.hpp"
 #include "abi/uinter_caller.hpp"
 #include "abi/vuinteraction_caller.hpp"
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/mixed_control_solver.hpp"
 #include "support.hpp"

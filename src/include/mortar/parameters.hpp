@@ -55,10 +55,8 @@ const char* scheme_name(Scheme s);
 // cmake/sanitizers.cmake defines libFuzzer's conventional
 // FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION) runs the same code
 // with 10^3, the fuzz target's cap of an explicit props(18): an input with
-// nProps < 18 could otherwise spend 10^5 substeps, 2 x 10^5 Newton iterations
-// and four times that again in the fallback chain on one point-increment,
-// seconds under the sanitizers, and such inputs set a long run's rate
-// (docs/robustness.md).
+// nProps < 18 could otherwise spend 10^5 substeps, 2 x 10^5 Newton iterations ...
+// The rest: docs/numerics.md, section 3.
 #ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
 inline constexpr int kDefaultMaxSubsteps = 1000;
 #else

@@ -1,20 +1,17 @@
 // Stress integration of one increment for one interface point (docs/model.md
-// 7): the public entry of the law. The physics is in physics/, the schemes,
-// the substepper and the return mapping in integration/ (docs/architecture.md).
+// 7): the law's entry. With mortar/batch.hpp (the elastic kernel over a batch
+// of points) the whole boundary the adapters and the harness see; the
+// physics and the schemes behind it are the law's own (docs/architecture.md).
 #pragma once
 
 #include <array>
 
+#include "mortar/elastic.hpp"
 #include "mortar/failure.hpp"
 #include "mortar/finite.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/result.hpp"
-#include "mortar/integration/elastic_lanes.hpp"
-#include "mortar/integration/elastic_shortcut.hpp"
-#include "mortar/integration/local_problem.hpp"
 #include "mortar/state.hpp"
-#include "mortar/physics/elasticity.hpp"
-#include "mortar/physics/yield_surface.hpp"
 
 namespace mortar {
 
@@ -43,13 +40,6 @@ inline bool state_valid(const State& s) {
 // The first rule the state breaks, or nullptr (state_valid's rules).
 const char* check_state(const State& s);
 
-// elastic_increment (integration/elastic_shortcut.hpp), inline here for the
-// adapters' per-point loops: from a state state_valid() accepts, an increment
-// it books is integrate_increment's result without a tangent, bit for bit (it
-// is the first thing integrate_increment tries); false, the state untouched,
-// for every other increment. lanes::elastic_increment_lanes
-// (integration/elastic_lanes.hpp): the same for two unworn points at once.
-
 // Integrates the separation increment d_separation (law signs) from `state`
 // and overwrites `state` with the end state. Where the chosen scheme fails on
 // a valid state and a finite increment, the fallback chain integrates the
@@ -62,23 +52,19 @@ IncrementResult integrate_increment(const Model& model, State& state, const Vec3
 
 // The same, and, when `tangent` is not null, the tangent d traction_end /
 // d d_separation (law signs) of this update (docs/model.md 7.5):
-//   - implicit scheme: the consistent (algorithmic) tangent of the backward
-//     Euler update, through the elastic-plastic intersection, every plastic
-//     substep (linearised local residuals at convergence) and the secant
-//     damage rule; exact except where status.tangent_approximate says;
-//   - explicit schemes: the continuum elastic-plastic tangent (Eq. 20) at the
-//     end point after plastic flow, else the secant stiffness;
-//   - elastic increment: the secant stiffness K(d, h) (Eq. 21);
-//   - increment integrated by the fallback chain: the tangent of its last
-//     piece, approximate;
-//   - failed increment: the secant stiffness of the start state.
-// Fixed-size, allocates nothing.
+// The rest: docs/numerics.md, section 2.
 IncrementResult integrate_increment(const Model& model, State& state, const Vec3& d_separation, Mat3* tangent);
 
-// integrate_increment without a tangent for an increment elastic_increment
-// has declined from the same state: the same result, without trying the
-// shortcut a second time (the adapters' full path, after their elastic path).
-IncrementResult integrate_declined_increment(const Model& model, State& state, const Vec3& d_separation);
+// integrate_increment without a tangent and without the elastic shortcut
+// (mortar/elastic.hpp): the same result, for a caller that has tried the
+// shortcut itself or whose point most likely starts on the surface.
+IncrementResult integrate_full(const Model& model, State& state, const Vec3& d_separation);
+
+// F / FTOL's scale (Eq. 2, docs/model.md 7) of a traction at a state: at most
+// 1 on or inside the surface within the tolerance.
+double yield_ratio(const Model& model, const State& state, const Vec3& traction);
+// The softening factor s = max(0, 1 - wI/GIC - wII/GIIC) (Eqs. 4-5).
+double softening_factor(const Model& model, const State& state);
 
 // The continuum (rate) tangent of Eq. 20 at a state and its traction, on the
 // damage-growing branch, for separation increments in the direction of dd:

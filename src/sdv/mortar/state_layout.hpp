@@ -1,13 +1,11 @@
-// State of one interface point, and its named layout over the solver-owned
-// flat array (docs/model.md 3; positions 1-14 are a user-facing contract;
-// 24-34 hold single precision's float pairs, state_pairs.hpp).
+// The named layout of a point's state over the solver-owned flat array
+// (docs/model.md 3; positions 1-14 are a user-facing contract; 24-34 hold
+// single precision's float pairs, state_pairs.hpp).
 #pragma once
 
-#include <Eigen/Core>
+#include "mortar/state.hpp"
 
 namespace mortar {
-
-using Vec3 = Eigen::Vector3d;  // (n, s1, s2) components
 
 // Positions in the flat state array, 0-based (docs and Abaqus SDV numbers are
 // these + 1). 1-14 as docs/model.md 3; 15 onwards implementation-defined.
@@ -82,27 +80,6 @@ inline constexpr SlotPair kPairedSlots[] = {
 };
 static_assert(sizeof kPairedSlots / sizeof kPairedSlots[0] == kPairedStateCount - kStateCount,
               "one low slot per paired variable");
-
-// The value type the law works on (always double precision).
-struct State {
-  Vec3 plastic = Vec3::Zero();     // delta_p
-  Vec3 crack = Vec3::Zero();       // delta_cr
-  double wI = 0, wII = 0, wIII = 0;
-  double dn = 0, ds = 0;
-  Vec3 separation = Vec3::Zero();  // delta, since the reference state
-  bool open = false;               // unilateral regime h (Eq. 13)
-  double dissipation_plastic = 0;
-  double dissipation_damage = 0;
-  double energy_unilateral = 0;
-  int substeps_accepted = 0;
-  int substeps_rejected = 0;
-  int status = 0;
-  // SDV 35: every integration_flag an increment of this point has raised
-  // (OR'd; outside SDV 1-23, so load_state/store_state leave it).
-  int integration_flags = 0;
-
-  Vec3 elastic_separation() const { return separation - plastic; }
-};
 
 // A count or status slot (SDV 19-21) as an int. These slots are outputs of
 // the last increment, so garbage in them (a corrupted restart) must not

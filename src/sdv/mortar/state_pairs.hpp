@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <cstring>
 
-#include "mortar/state.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar {
 
@@ -43,42 +43,7 @@ inline bool pair_consistent(float high, float low) {
 }
 
 // A pair is canonical when storing its own value again writes it unchanged:
-// float(v) and pair_low(v, high) are high and low bit for bit, v being
-// pair_value(high, low). The single-precision elastic path (adapter/
-// explicit_block.hpp) leaves the pairs an elastic increment does not change
-// where they are; for a canonical pair that is exactly what rewriting them
-// (store_state_pairs, the full path) would write. Such a pair is finite and
-// pair_consistent when its high part is finite: float(v) = high puts v within
-// half a spacing of high, so low, v - high rounded, is at most one spacing.
-//
-// Nearly every pair store_state_pairs writes is canonical. With x its
-// finite value, h = float(x), r = x - h and l = float(r):
-//  - r is exact in double: |r| <= |x| (0 is a float, h the nearest) and r
-//    is a multiple of x's own spacing, as h is.
-//  - v = h + l is exact: l = r when r has at most 24 bits (then v = x);
-//    otherwise l is a multiple of r's 24-bit spacing, coarser than x's
-//    53-bit one, and |v| is at most about |x|, so v fits in 53 bits.
-//  - float(v) = h: r lies within h's rounding interval, between minus half
-//    the spacing below h and half the spacing above it (both floats, or
-//    below float's least spacing rounding to 0), and rounding r to l is
-//    monotonic, so v lies in it too; strictly inside, v rounds to h, and at
-//    an end that x itself reached (a tie of x) l = r, v = x rounds to h.
-//  - l round-trips: v - h is exact (it is l), and float(l) = l.
-// The exceptions, after which the elastic path rewrites every pair as
-// store_state_pairs does (canonical within two rewrites: (-0, -0) becomes
-// (-0, +0), then (+0, +0)): a tie, r just inside the interval
-// rounding to l = half a spacing, so that v is the midpoint and rounds to the
-// even neighbour, which need not be h (x within 2^-24 of its spacing of a
-// midpoint, about one value in 2^24); a low part -0 (a tiny negative
-// remainder, |x| below about 2^-97), as h + (-0) - h is +0; and h = -0
-// (x = -0), as -0 + 0 is +0. Inline and branch-free: it runs for 11 pairs on
-// every elastic point-update of the single-precision routine.
-// The test performs the store's own two roundings rather than a cheaper
-// condition proved in IEEE arithmetic (such as h + l in float equal to h with
-// v - h equal to l): the same operations, so its verdict stays that of the
-// store under whatever floating-point mode the solver runs in, flush-to-zero
-// and denormals-are-zero included, where such a proof fails for subnormal
-// low parts.
+// The rest: docs/numerics.md, section 18.
 inline bool pair_canonical(float high, float low, double value) {
   const float h = float(value), l = float(value - double(high));
   std::uint32_t hb, lb, high_b, low_b;
@@ -90,7 +55,7 @@ inline bool pair_canonical(float high, float low, double value) {
 }
 
 // store_state_pairs' rounding of one value, for the paths that store a few
-// pairs inline. The empty asm hides that high is float(value): GCC 12.2 at
+// pairs inline. The empty asm hides that high is float(value): GCC at
 // -O2/-O3 otherwise miscompiles float(value - double(float(value))) when it
 // vectorises two such lanes (below, load_state_pairs), taking the extension
 // of the truncation for value itself and writing a low part 0.
@@ -251,7 +216,7 @@ inline bool canonical_pairs_into(const float* a, State& s) {
 // load_state / store_state with the paired variables as float pairs: the
 // array holds at least kPairedStateCount values. The load is inline (the
 // single-precision routines run it on every point-update). The store stays
-// out of line, as scalar code: GCC 12.2 at -O2 and -O3 miscompiles
+// out of line, as scalar code: GCC at -O2 and -O3 miscompiles
 // float(x - double(float(x))) when it vectorises two such lanes within a block
 // (the extension of the truncation becomes x, the low part 0; observed on
 // x86-64, reproduced in ten lines), which is what pair_low computes.
