@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 jobs=$(nproc 2>/dev/null || echo 2)
 linux_records=$PWD/build/tests/abi
-for f in abi_records_single.txt abi_records_double.txt uinter_records.txt; do
+for f in abi_records_single.txt abi_records_double.txt uinter_records.txt records_compare; do
   [ -s "$linux_records/$f" ] || { echo "windows.sh: $linux_records/$f missing: run the normal build's tests first" >&2; exit 1; }
 done
 launcher=()
