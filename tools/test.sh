@@ -4,7 +4,10 @@
 #   2. AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/): every test
 #      of the law and the ABI adapters (tools/sanitize.sh address-all: all);
 #   3. ThreadSanitizer (build-tsan/): the concurrency tests of the ABI adapters;
-#   4. libFuzzer (build-fuzz/): vuinteraction_ for 60 s from the seed corpus.
+#   4. libFuzzer (build-fuzz/): vuinteraction_ for 60 s from the seed corpus;
+#   5. Windows (build-mingw/): the DLLs cross-built with MinGW-w64, their
+#      exports and imports, and the Fortran callers under Wine against the
+#      normal build's records (tools/windows.sh, docs/abaqus.md "Windows").
 # Stages 2-4 are tools/sanitize.sh and tools/fuzz.sh (docs/robustness.md);
 # MJ_TEST_QUICK=1 runs stage 1 only (for a quick local check).
 #
@@ -38,6 +41,7 @@ if [ "${MJ_TEST_QUICK:-0}" != 1 ]; then
   stage "ASan + UBSan build and tests (law, adapters)" asan.log bash tools/sanitize.sh address
   stage "TSan build and concurrency tests" tsan.log bash tools/sanitize.sh thread
   stage "fuzz vuinteraction_ for 60 s" fuzz.log bash tools/fuzz.sh 60
+  stage "Windows DLLs (MinGW-w64) and Fortran callers under Wine" windows.log bash tools/windows.sh
 fi
 printf 'test.sh: %s\n' "${summary[@]}"
 echo "test.sh: all stages: $SECONDS s"

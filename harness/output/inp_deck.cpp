@@ -30,7 +30,9 @@ std::string prop_name(size_t i) {
 
 void write_surface_interaction(std::ostream& out, const InpOptions& o) {
   out << "** Mortar-joint law (coupled damage-plasticity), Abaqus/Explicit general contact.\n"
-      << "** Assign with *CONTACT PROPERTY ASSIGNMENT; run with user=<the VUINTERACTION object>.\n"
+      << "** Assign with *CONTACT PROPERTY ASSIGNMENT. Run without user=: usub_lib_dir in abaqus_v6.env\n"
+      << "** names the folder of libexplicitU.so / libexplicitU-D.so (Windows: explicitU.dll,\n"
+      << "** explicitU-D.dll); docs/abaqus.md.\n"
       << "*SURFACE INTERACTION, NAME=" << o.name << ", USER=INTERACTION, PROPERTIES=" << o.props.size()
       << ", DEPVAR=" << o.depvar << "\n";
   for (size_t first = 0; first < o.props.size(); first += 8) {

@@ -22,6 +22,10 @@ TEST_CASE("The input-deck block: header, comments, eight exact props per line", 
   CHECK_THAT(text, Catch::Contains("\n209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87\n"));
   CHECK_THAT(text, Catch::Contains("** props(9..16): m psi0 psir n bn bs scheme STOL\n"
                                    "1217.7, 27.7, 0., 1828.3, 10., 3., 1., 1e-08\n"));
+  // How to run it, as README and docs/abaqus.md say: the prebuilt libraries
+  // from usub_lib_dir, no user= on the command line.
+  CHECK_THAT(text, Catch::Contains("Run without user=: usub_lib_dir in abaqus_v6.env"));
+  CHECK_THAT(text, !Catch::Contains("run with user="));
 }
 
 TEST_CASE("Numbers in the input deck read back exactly", "[inputs]") {
