@@ -85,7 +85,7 @@ void copy_pass(Real* stress, Real* flux_slv, Real* flux_mst, Real* state, Real* 
 // pages) what the loop keeps on the stack shares its offset within a 4 KiB
 // page with the arrays it streams through, and a load waits on a store to
 // the other address (4K aliasing): the copy pass took 1.5-2.5 x its time
-// in every sample of such a run (docs/bench/throughput.md). The copy pass
+// in every sample of such a run (docs/decisions.md). The copy pass
 // is timed from four places a quarter of a page apart and the fastest is its
 // sample: the limit it stands for is the fastest pass over the arrays.
 constexpr int kCopyPlacements[] = {0, 1024, 2048, 3072};
@@ -142,7 +142,7 @@ class Cases {
     // may wait for its CPU to be woken and scheduled, which an analysis's
     // threads, alive from increment to increment, do not (on this KVM guest,
     // samples of 1-8 ms: 2 threads against 1 gave 0.80-1.78 with the
-    // creation timed, 1.17-1.94 without; docs/bench/throughput.md).
+    // creation timed, 1.17-1.94 without; docs/decisions.md).
     std::atomic<int> ready{0};
     auto all_running = [&] {
       ready.fetch_add(1);
@@ -164,7 +164,7 @@ class Cases {
     // that blocks lets this vCPU halt, and the host's wake-up of it was timed
     // with the work (double elastic in cache, 2 threads against 1: 1.73-1.83
     // over five runs with the join timed, 1.84-1.90 over three without;
-    // docs/bench/throughput.md).
+    // docs/decisions.md).
     while (finished.load() < threads - 1) {
     }
     const double ns = std::chrono::duration<double, std::nano>(Clock::now() - t0).count();
@@ -192,7 +192,7 @@ class Cases {
   // prefetcher streaming through its share reads past, so that the lines
   // the other core writes moved between them (single precision in cache,
   // 2 threads against 1: 1.71-1.75 on the elastic update with 64, 1.94-1.98
-  // with 1024; docs/bench/throughput.md).
+  // with 1024; docs/decisions.md).
   struct Range {
     long first, last;
   };
@@ -402,9 +402,8 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   // their own size, not at the start of the out-of-cache case's arrays, which
   // the allocator maps page-aligned, every array's first point at the same
   // offset in a page, so that the first points of the twenty arrays fall in
-  // one set of the first-level cache (double elastic in cache there, the
-  // profiling driver: 28-31 ns per point-update against 25-27, 2 threads
-  // against 1 1.8-1.9 against 2.0; docs/bench/throughput.md).
+  // one set of the first-level cache, which slowed the in-cache case and
+  // its two-thread scaling.
   const long in_capacity = Cases<double>::capacity(2 * kBlock);
   const long out_capacity = Cases<double>::capacity(r.points_out_of_cache);
   Cases<double> doubles_in(double_precision_routine(), props, in_capacity);

@@ -89,7 +89,7 @@ mortar::ValidationError read_setup(const Real* props, int n_props, const Default
 // Abaqus calls an interaction's routine with one props array increment after
 // increment, and reading it anew (Table 1's rules, make_model's tangents)
 // costs as much as a good share of a block's elastic updates
-// (docs/bench/throughput.md). Only props that passed are kept, so a bad array
+// (docs/decisions.md). Only props that passed are kept, so a bad array
 // is read and reported at every call; the key is their bits (props(1..20))
 // and the defaults, on which the setup alone depends. Per thread: Abaqus/
 // Explicit's threads call the routine at once.
