@@ -14,7 +14,7 @@ constexpr int kMaxCrossingCuts = 40;  // docs/model.md 6, regime switches inside
 
 double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   const Controls& c = M.controls;
-  at_ = at;
+  surface_at_start_ = at;
   // The floor follows the strength left (min_substep_floor); an increment no
   // longer than the material length keeps min_substep throughout.
   const double length = d.norm();
@@ -46,18 +46,18 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // it yields again is the segment's to find (the elastic-plastic
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
-    if (unloaded && yield_of(P, at_) < -yield_tolerance(M, P.sigma)) return T;
-    if (bounded) scheme.set_floor(min_substep_floor(M, length, at_.S.s_raw));
+    if (unloaded && yield_of(P, surface_at_start_) < -yield_tolerance(M, P.sigma)) return T;
+    if (bounded) scheme.set_floor(min_substep_floor(M, length, surface_at_start_.S.s_raw));
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
-    with_psi(M, at_.S, P.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
-    const Rates r1 = stage(M, P, at_, dd);
+    with_psi(M, surface_at_start_.S, P.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
+    const Rates r1 = stage(M, P, surface_at_start_, dd);
     if (r1.snapback) {  // no strain-driven solution from here
       if (!relax(M, P, st, true)) {
         st.failure = Failure::relaxation_failed;
         return T;
       }
-      at_ = surface_at(M, P);
+      surface_at_start_ = surface_at(M, P);
       tangent.forget(st);
       continue;
     }
@@ -65,9 +65,9 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // (cone.hpp; docs/model.md 6, Decision - sliding on the cone), for every
     // scheme; not while a bracket is being closed.
     if (r1.plastic && !cut_.active && !sep_cut_.active) {
-      const ConeStep cone = cone_step(M, P, at_, (1 - T) * d, r1.grow);
+      const ConeStep cone = cone_step(M, P, surface_at_start_, (1 - T) * d, r1.grow);
       if (cone.done > 0) {
-        at_ = surface_at(M, P);
+        surface_at_start_ = surface_at(M, P);
         tangent.forget(st);
         ++st.substeps_accepted;
         T += cone.done * (1 - T);
@@ -77,7 +77,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     }
     // The apex zone of a worn open joint (in_apex_zone): backward-Euler
     // substeps, whatever the scheme (docs/model.md 6, Decision - the apex zone).
-    SubstepScheme& sch = in_apex_zone(M, P, at_) ? static_cast<SubstepScheme&>(apex_) : scheme;
+    SubstepScheme& sch = in_apex_zone(M, P, surface_at_start_) ? static_cast<SubstepScheme&>(apex_) : scheme;
     const Attempt a = sch.attempt(P, dd, dT, r1);
     if (a.kind == Attempt::retry) {
       dT = a.size;
@@ -91,8 +91,8 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
     // settle() and the landings change no work: SN is the surface of the
     // substep's end before and after them.
-    SurfaceAt at_Q;
-    const Surface& SN = at_Q.S = a.surface ? *a.surface : surface_of(M, a.end->y);
+    SurfaceAt surface_at_end;
+    const Surface& SN = surface_at_end.S = a.surface ? *a.surface : surface_of(M, a.end->y);
     const Landing sep = separation(SN, dT);
     if (sep == Landing::cut) continue;
     const Landing normal = normal_completion(*a.end, SN, dT);
@@ -116,14 +116,14 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
-    at_Q.radius = shear_radius(Q.sigma, SN);
-    if (const double retry = sch.recheck(Q, at_Q, dT, lands); retry > 0) {
+    surface_at_end.radius = shear_radius(Q.sigma, SN);
+    if (const double retry = sch.recheck(Q, surface_at_end, dT, lands); retry > 0) {
       dT = retry;
       ++st.substeps_rejected;
       continue;
     }
-    sch.commit(P, Q, at_Q, dd, T, dT, lands);
-    at_ = at_Q;
+    sch.commit(P, Q, surface_at_end, dd, T, dT, lands);
+    surface_at_start_ = surface_at_end;
     ++st.substeps_accepted;
     unloaded = !r1.plastic;
     T += dT;
@@ -175,7 +175,7 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
 // separates does not depend on the cuts; settle() then disintegrates it.
 Substepper::Landing Substepper::separation(const Surface& SN, double& dT) {
   if (!P.y.open) return Landing::none;
-  const double s0 = at_.S.s_raw, s1 = SN.s_raw;
+  const double s0 = surface_at_start_.S.s_raw, s1 = SN.s_raw;
   if (separated(s0)) return Landing::none;
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
   return one_sided(sep_cut_, sep_cuts_, dT, std::log(s0 / kSeparated), g1, g1 < -1e-9, std::abs(g1) <= 1e-9,
@@ -197,7 +197,7 @@ Substepper::Landing Substepper::normal_completion(const Point& N, const Surface&
     const double left = kNormalComplete * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
     return (X.sigma[0] - left) / M.stress_scale;
   };
-  const double g0 = g(P, at_.radius);
+  const double g0 = g(P, surface_at_start_.radius);
   if (!(g0 > 0)) return Landing::none;
   const double g1 = g(N, shear_radius(N.sigma, SN));
   const bool landed = g1 < 0 && g1 >= -1e-9;

@@ -57,7 +57,7 @@ class Substepper {
   SubstepScheme& scheme;
   BackwardEuler apex_;  // the apex zone's substeps, every scheme
   bool at_boundary_ = false;
-  SurfaceAt at_;  // the surface at P, evaluated once per substep state
+  SurfaceAt surface_at_start_;  // the surface at P, evaluated once per substep state
   CrossingBracket cut_;
   int cuts_ = 0;
   CrossingBracket sep_cut_;
