@@ -30,6 +30,7 @@ namespace {
 using mj_abi_test::ContactPair;
 using mj_abi_test::GeneralContact;
 using mj_abi_test::Name80;
+using mj_abi_test::paper_props;
 using mj_test::StderrCapture;
 
 using Real = mj_real;
@@ -39,10 +40,6 @@ constexpr bool kDouble = sizeof(Real) == sizeof(double);
 // Relative agreement expected between the adapter and the law itself.
 constexpr double kRtol = kDouble ? 1e-12 : 1e-6;
 
-// Almeida M15 as props(1..14), then optionally controls and the shear sign.
-std::vector<Real> paper_props(int n_props = 14) {
-  return mj_abi_test::props_of<Real>(mortar::testing::almeida_m15(), n_props);
-}
 
 using mj_abi_test::all_finite;
 

@@ -23,20 +23,11 @@
 
 namespace {
 
-using mj_abi_test::all_finite;
-using mj_abi_test::ContactPair;
-using mj_abi_test::GeneralContact;
-using mj_abi_test::Name80;
+using namespace mj_abi_test;
 using mj_test::StderrCapture;
-
 using Real = mj_real;
 namespace slot = mortar::slot;
 constexpr int kStates = mortar::kStateCount;
-
-// Almeida M15 as props(1..14), then optionally controls and the shear sign.
-std::vector<Real> paper_props(int n_props = 14) {
-  return mj_abi_test::props_of<Real>(mortar::testing::almeida_m15(), n_props);
-}
 
 // A rejected block: the message names the routine, the interaction, the
 // argument and the rule; every point carries `code` in SDV 21; the outputs

@@ -36,7 +36,7 @@ namespace slot = mortar::slot;
 constexpr bool kDouble = sizeof(Real) == sizeof(double);
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<Real> paper_props() { return mj_abi_test::props_of<Real>(mortar::testing::almeida_m15()); }
+using mj_abi_test::paper_props;
 
 // The tangent directions turn by `angle` about the normal (t1 towards t2):
 // the components of a fixed in-plane vector go from v to dRot v. Column-major.
