@@ -1,27 +1,10 @@
-/* The Abaqus user-subroutine interfaces this project implements (Explicit:
- * VUINTERACTION, VUINTER; Standard: UINTER),
- * declared once, with their argument lists as Abaqus passes them (Fortran
- * convention: every argument by reference, lower-case symbol with a trailing
- * underscore, one hidden length per CHARACTER argument after all others).
- *
- * One source, two precisions: every REAL argument is mj_real, which is float
- * unless MJ_DOUBLE_PRECISION is defined (Abaqus/Explicit double precision).
- * INTEGER arguments (names i-n) are int.
- *
- * Confidence: [verified] / [transcribed] as in the README section "Using it in
- * Abaqus/Explicit" (docs/abaqus.md), which also says how to check them against
- * your release. In short: the VUINTERACTION list is [verified] up to surfSlv
- * and [transcribed] from surfMst on; the VUINTER list is [verified].
- *
- * Hidden lengths are declared int. gfortran passes them as 8-byte integers
- * (size_t); other compilers may pass 4 bytes. They come after more than six
- * arguments, so on x86-64 Linux each sits in its own 8-byte stack slot, and a
- * little-endian int read of that slot gives the length either way; a size_t
- * read of a 4-byte argument would not. The routines only use surfInt's
- * length, clamped to 80, to trim the name in messages.
- *
- * What the routines do with the arguments (signs, state layout, energies,
- * errors) is documented in adapter/explicit_block.hpp and docs/abaqus.md.
+/* The Abaqus user-subroutine interfaces (Explicit: VUINTERACTION, VUINTER;
+ * Standard: UINTER), declared once, as Abaqus passes them: every argument by
+ * reference, lower-case symbols with a trailing underscore, one hidden length
+ * per CHARACTER argument after all others. Every REAL argument is mj_real,
+ * float unless MJ_DOUBLE_PRECISION is defined; INTEGER arguments are int.
+ * Confidence in each list, the hidden lengths' width, and how to check them
+ * against a release: docs/abaqus.md and docs/adapters.md, section 12.
  */
 #ifndef MJ_VUINTERACTION_H
 #define MJ_VUINTERACTION_H

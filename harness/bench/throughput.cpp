@@ -14,6 +14,7 @@
 
 #include "bench/drive.hpp"
 #include "bench/throughput_call.hpp"
+#include "bench/throughput_host.hpp"
 #include "input/parameter_file.hpp"
 #include "mortar/state_layout.hpp"
 #include "vuinteraction.h"
@@ -268,59 +269,6 @@ class Cases {
   Start start_[4];
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// The host's references for the thread rows (ThroughputResult): loops on
-// values that stay in registers, whose result goes to a volatile so that
-// they are not removed.
-// Eight multiply-add chains: each waits on its own last result.
-void arithmetic_chains(long iterations) {
-  double x[8] = {1, 2, 3, 4, 5, 6, 7, 8};
-  for (long i = 0; i < iterations; ++i)
-    for (double& v : x) v = v * 0.999999999 + 1e-9;
-  volatile double sink = x[0] + x[1] + x[2] + x[3] + x[4] + x[5] + x[6] + x[7];
-  (void)sink;
-}
-
-// Sixteen independent additions per iteration: more than a core's adders
-// finish in the latency of one, so the adders, not the chains, set the pace.
-void independent_additions(long iterations) {
-  double x[16];
-  for (int k = 0; k < 16; ++k) x[k] = k;
-  for (long i = 0; i < iterations; ++i)
-    for (double& v : x) v += 1e-9;
-  double sum = 0;
-  for (const double v : x) sum += v;
-  volatile double sink = sum;
-  (void)sink;
-}
-
-// One sample: the loop on 1 thread, then on 2 threads at once (each the same
-// count), as throughput 2 threads against 1.
-double host_scaling_sample(void (*loop)(long), long iterations) {
-  const Clock::time_point t0 = Clock::now();
-  loop(iterations);
-  const Clock::time_point t1 = Clock::now();
-  std::thread other(loop, iterations);
-  loop(iterations);
-  other.join();
-  const Clock::time_point t2 = Clock::now();
-  return 2.0 * std::chrono::duration<double>(t1 - t0).count() / std::chrono::duration<double>(t2 - t1).count();
-}
-
-double host_thread_scaling(void (*loop)(long), int repeats, double seconds) {
-  const Clock::time_point t0 = Clock::now();
-  loop(100000);  // the calibration: iterations for `seconds`
-  const double per_iteration = std::chrono::duration<double>(Clock::now() - t0).count() / 1e5;
-  const long iterations = std::max(1000L, long(seconds / std::max(per_iteration, 1e-12)));
-  std::vector<double> samples;
-  for (int rep = 0; rep < repeats; ++rep) samples.push_back(host_scaling_sample(loop, iterations));
-  return median(samples);
-}
-
 // One precision and cache case: its rows (1 and 2 threads), the increments
 // that make each of its samples last about `seconds`, and its timer.
 struct CaseRows {
@@ -372,21 +320,7 @@ void run_cases(std::vector<CaseRows>& cases, const ThroughputOptions& o, Through
     }
 }
 
-std::string fixed(double x, int digits) {
-  std::ostringstream o;
-  o << std::fixed << std::setprecision(digits) << x;
-  return o.str();
-}
-
 }  // namespace
-
-double paired_ratio(const std::vector<double>& a, const std::vector<double>& b) {
-  if (a.size() != b.size() || a.empty())
-    throw std::invalid_argument("paired_ratio: the two series must have the same, non-zero number of samples");
-  std::vector<double> r(a.size());
-  for (size_t i = 0; i < a.size(); ++i) r[i] = a[i] / b[i];
-  return median(r);
-}
 
 ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   const Parameters p = read_parameter_file(o.data_dir + "/almeida_tension/params_M15.toml").values;
@@ -419,55 +353,6 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, seconds);
   r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, seconds);
   return r;
-}
-
-std::string throughput_report(const ThroughputResult& r) {
-  auto ns = [](const ThroughputRow& row, Workload w) { return row.ns[int(w)]; };
-  // Within one row: workload a against workload b, repeat by repeat.
-  auto ratio = [](const ThroughputRow& row, Workload a, Workload b) {
-    return paired_ratio(row.samples[int(a)], row.samples[int(b)]);
-  };
-  std::ostringstream o;
-  o << "ns per point-update (median of " << r.repeats << "), blocks of " << r.block
-    << " points, nDir = 3, Almeida M15 at sigma_n = -0.5 MPa: elastic +-1e-7 mm, softening and sliding "
-       "(residual surface) at 1e-5 mm of slip per increment; each ratio is the median over the repeats of "
-       "the ratio within a repeat\n\n"
-    << "| precision | points | threads | copy | elastic | softening | sliding | elastic / copy | softening / "
-       "elastic | sliding / elastic |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  for (const ThroughputRow& row : r.rows) {
-    o << "| " << (row.single ? "single" : "double") << " | " << row.points << (row.in_cache ? " (in cache)" : "")
-      << " | " << row.threads << " | " << fixed(ns(row, Workload::copy), 1) << " | "
-      << fixed(ns(row, Workload::elastic), 1) << " | " << fixed(ns(row, Workload::softening), 1) << " | "
-      << fixed(ns(row, Workload::sliding), 1) << " | "
-      << fixed(ratio(row, Workload::elastic, Workload::copy), 2) << " | "
-      << fixed(ratio(row, Workload::softening, Workload::elastic), 2) << " | "
-      << fixed(ratio(row, Workload::sliding, Workload::elastic), 2) << " |\n";
-  }
-  o << "\n2 threads against 1 (throughput):\n\n| precision | points | copy | elastic | softening | sliding |\n"
-       "|---|---|---|---|---|---|\n";
-  double worst_copy = 0, worst_sliding = 0, worst_threads = 1e300;
-  for (size_t i = 0; i + 1 < r.rows.size(); i += 2) {
-    const ThroughputRow &one = r.rows[i], &two = r.rows[i + 1];
-    auto scaling = [&](Workload w) { return paired_ratio(one.samples[int(w)], two.samples[int(w)]); };
-    o << "| " << (one.single ? "single" : "double") << " | " << (one.in_cache ? "in cache" : "out of cache");
-    for (const Workload w : kWorkloads) o << " | " << fixed(scaling(w), 2);
-    o << " |\n";
-    for (const ThroughputRow* row : {&one, &two}) {
-      worst_copy = std::max(worst_copy, ratio(*row, Workload::elastic, Workload::copy));
-      worst_sliding = std::max(worst_sliding, ratio(*row, Workload::sliding, Workload::elastic));
-    }
-    for (const Workload w : {Workload::elastic, Workload::softening, Workload::sliding})
-      worst_threads = std::min(worst_threads, scaling(w));
-  }
-  auto verdict = [](bool met) { return met ? "met" : "NOT met"; };
-  o << "\ntargets, worst case over the rows:\n"
-    << "- elastic / copy <= 2: " << fixed(worst_copy, 2) << ", " << verdict(worst_copy <= 2) << "\n"
-    << "- sliding / elastic <= 10: " << fixed(worst_sliding, 2) << ", " << verdict(worst_sliding <= 10) << "\n"
-    << "- 2 threads >= 1.8 x 1 thread (law workloads): " << fixed(worst_threads, 2) << ", "
-    << verdict(worst_threads >= 1.8) << "; this host's own 2-thread scaling (arithmetic sharing nothing, "
-    << "median of " << r.repeats << "): " << fixed(r.host_chain_scaling, 2) << " for dependent multiply-add chains, "
-    << fixed(r.host_port_scaling, 2) << " for independent additions (port-bound)\n";
-  return o.str();
 }
 
 }  // namespace mortar::harness

@@ -16,14 +16,15 @@ const char* check_state(const State& s) {
   if (state_valid(s)) return nullptr;
   const std::array<double, 17> v = finite_state_values(s);
   if (!all_finite(v.data(), int(v.size()))) return "every state variable must be finite";
-  if (!(s.dn >= 0 && s.dn <= 1)) return "damage d_n (SDV 10) must lie in [0, 1]";
-  if (!(s.ds >= 0 && s.ds <= 1)) return "damage d_s (SDV 11) must lie in [0, 1]";
-  if (!(s.wI >= 0)) return "work w_I (SDV 7) must be >= 0";
+  // The rule broken, named: ranges_hold of one variable, the others at 0.
+  if (!ranges_hold(s.dn, 0.0, 0.0, 0.0, 0.0, 0.0)) return "damage d_n (SDV 10) must lie in [0, 1]";
+  if (!ranges_hold(0.0, s.ds, 0.0, 0.0, 0.0, 0.0)) return "damage d_s (SDV 11) must lie in [0, 1]";
+  if (!ranges_hold(0.0, 0.0, s.wI, 0.0, 0.0, 0.0)) return "work w_I (SDV 7) must be >= 0";
   // A negative w_II would raise the strength above its initial value (s > 1, Eq. 4).
-  if (!(s.wII >= 0)) return "work w_II (SDV 8) must be >= 0";
-  if (!(s.wIII >= 0)) return "work w_III (SDV 9) must be >= 0";
+  if (!ranges_hold(0.0, 0.0, 0.0, s.wII, 0.0, 0.0)) return "work w_II (SDV 8) must be >= 0";
+  if (!ranges_hold(0.0, 0.0, 0.0, 0.0, s.wIII, 0.0)) return "work w_III (SDV 9) must be >= 0";
   // The damage dissipation only grows from 0 (docs/model.md 6, energy booking).
-  if (!(s.dissipation_damage >= 0)) return "damage dissipation (SDV 17) must be >= 0";
+  if (!ranges_hold(0.0, 0.0, 0.0, 0.0, 0.0, s.dissipation_damage)) return "damage dissipation (SDV 17) must be >= 0";
   return nullptr;
 }
 

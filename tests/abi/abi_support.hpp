@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <vector>
 
@@ -29,6 +30,12 @@ std::vector<Real> props_of(const mortar::Parameters& p, int n_props = mortar::kP
   std::vector<Real> props(n_props, Real(0));
   for (int i = 0; i < std::min(n_props, mortar::kParameterCount); ++i) props[i] = Real(all[i]);
   return props;
+}
+
+// Every value finite, in either precision.
+template <class Real>
+bool all_finite(const std::vector<Real>& v) {
+  return std::all_of(v.begin(), v.end(), [](Real x) { return std::isfinite(double(x)); });
 }
 
 }  // namespace mj_abi_test

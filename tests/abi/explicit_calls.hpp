@@ -9,9 +9,16 @@
 
 #include "abi_support.hpp"
 #include "mortar/state_layout.hpp"
+#include "paper_sets.hpp"
 #include "vuinteraction.h"
 
 namespace mj_abi_test {
+
+// Almeida M15 as props(1..14) in the routine's precision, then zeros (the
+// defaults of the controls and the shear sign) up to n_props.
+inline std::vector<mj_real> paper_props(int n_props = 14) {
+  return props_of<mj_real>(mortar::testing::almeida_m15(), n_props);
+}
 
 // dRot(2,2,n) = the unit matrix at every point.
 template <class Real>

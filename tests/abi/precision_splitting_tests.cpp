@@ -10,7 +10,6 @@
 // within 1e-3, requirement (b)'s bound. Proves that the float inputs and the
 // float-pair state do not make the answer depend on the cut.
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "one_point.hpp"
 #include "splitting_paths.hpp"
 #include "test_scale.hpp"
+#include "formatted.hpp"
 
 static_assert(sizeof(mj_real) == sizeof(float), "the precision tests drive the single-precision routine");
 
@@ -80,9 +80,10 @@ void check(const std::string& family, const std::string& set) {
   for (int calls : {1, 20}) {
     const RoutineRun r = run_routine_cut(props_of(ns.p), w, h, calls);
     const double e = worst(r.traction, ref.traction, pk);
-    std::printf("single precision, %s, %s, h = 1e-3 mm, %d calls per increment: max |sigma_single - "
-                "sigma_ref| / peak = %.2e\n",
-                family.c_str(), set.c_str(), calls, e);
+    INFO(
+        mj_test::formatted("single precision, %s, %s, h = 1e-3 mm, %d calls per increment: max |sigma_single - "
+                           "sigma_ref| / peak = %.2e",
+                           family.c_str(), set.c_str(), calls, e));
     INFO(family << ", " << set << ", " << calls << " calls per increment");
     CHECK(r.failures == 0);
     CHECK(e <= 1e-3);

@@ -9,7 +9,6 @@
 // state that breaks its rules.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -20,6 +19,7 @@
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "test_scale.hpp"
+#include "formatted.hpp"
 
 static_assert(sizeof(mj_real) == sizeof(float), "the precision tests drive the single-precision routine");
 
@@ -67,11 +67,12 @@ void compare(const char* path, const mortar::Parameters& p, double G, int compon
     const Curve plain = run_routine(props, mortar::kStateCount, c.legs);
     const Agreement a = agreement(pairs, law, G), b = agreement(plain, law, G);
     const int i = component;
-    std::printf("%s, h = %.0e mm, %zu increments: max |sigma_single - sigma_double| / peak: float pairs %.2e, "
-                "plain float %.2e; area excess / G: float pairs %+.2e, plain float %+.2e; final traction "
-                "%.4g (double), %.4g (pairs), %.4g (plain) MPa\n",
-                path, c.h, law.traction.size(), a.traction, b.traction, a.area, b.area, law.traction.back()[i],
-                pairs.traction.back()[i], plain.traction.back()[i]);
+    INFO(mj_test::formatted(
+        "%s, h = %.0e mm, %zu increments: max |sigma_single - sigma_double| / peak: float pairs %.2e, "
+        "plain float %.2e; area excess / G: float pairs %+.2e, plain float %+.2e; final traction "
+        "%.4g (double), %.4g (pairs), %.4g (plain) MPa",
+        path, c.h, law.traction.size(), a.traction, b.traction, a.area, b.area, law.traction.back()[i],
+        pairs.traction.back()[i], plain.traction.back()[i]));
     CAPTURE(path, c.h);
     CHECK(law.failures == 0);
     CHECK(pairs.failures == 0);

@@ -23,6 +23,7 @@
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "vuinteraction.h"
+#include "formatted.hpp"
 
 namespace {
 
@@ -35,7 +36,7 @@ namespace slot = mortar::slot;
 constexpr bool kDouble = sizeof(Real) == sizeof(double);
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<Real> paper_props() { return mj_abi_test::props_of<Real>(mortar::testing::almeida_m15()); }
+using mj_abi_test::paper_props;
 
 // The tangent directions turn by `angle` about the normal (t1 towards t2):
 // the components of a fixed in-plane vector go from v to dRot v. Column-major.
@@ -144,9 +145,10 @@ TEST_CASE("VUINTERACTION: a sliding joint keeps its traction in space while its 
           "[abi][rotation]") {
   GeneralContact gc(2, 3, paper_props());
   const Deviation dev = run_sliding_turn(gc, set_general_contact);
-  std::printf("[rotation] VUINTERACTION (%s): |tau|/pressure %.6g before the turn (tan(phi_r) %.6g), turn: shear "
-              "deviation %.3g, normal %.3g\n",
-              kDouble ? "double" : "single", dev.friction, kResidualFriction, dev.shear, dev.normal);
+  INFO(mj_test::formatted(
+      "[rotation] VUINTERACTION (%s): |tau|/pressure %.6g before the turn (tan(phi_r) %.6g), turn: shear "
+      "deviation %.3g, normal %.3g",
+      kDouble ? "double" : "single", dev.friction, kResidualFriction, dev.shear, dev.normal));
   CHECK(dev.friction == Approx(kResidualFriction).epsilon(0.005));
   CHECK(dev.shear < kTurnTolerance);
   CHECK(dev.normal < kTurnTolerance);
@@ -156,8 +158,8 @@ TEST_CASE("VUINTER: a sliding joint keeps its traction in space while its tangen
           "[abi][rotation]") {
   ContactPair cp(2, 3, paper_props());
   const Deviation dev = run_sliding_turn(cp, set_contact_pair);
-  std::printf("[rotation] VUINTER (%s): turn: shear deviation %.3g, normal %.3g\n", kDouble ? "double" : "single",
-              dev.shear, dev.normal);
+  INFO(mj_test::formatted("[rotation] VUINTER (%s): turn: shear deviation %.3g, normal %.3g",
+                          kDouble ? "double" : "single", dev.shear, dev.normal));
   CHECK(dev.shear < kTurnTolerance);
   CHECK(dev.normal < kTurnTolerance);
 }
@@ -167,8 +169,8 @@ TEST_CASE("without the state's rotation the turning joint departs from the fixed
   // given for dRot, i.e. the stored slips left in the old directions.
   GeneralContact gc(2, 3, paper_props());
   const Deviation dev = run_sliding_turn(gc, set_general_contact, false);
-  std::printf("[rotation] VUINTERACTION (%s) without dRot: shear deviation %.3g\n", kDouble ? "double" : "single",
-              dev.shear);
+  INFO(mj_test::formatted("[rotation] VUINTERACTION (%s) without dRot: shear deviation %.3g",
+                          kDouble ? "double" : "single", dev.shear));
   CHECK(dev.shear > 0.1);
 }
 

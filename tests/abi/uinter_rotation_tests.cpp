@@ -6,7 +6,6 @@
 // its tangent directions turn by 90 degrees. A bad DROT is reported.
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -20,6 +19,7 @@
 #include "paper_sets.hpp"
 #include "stderr_capture.hpp"
 #include "uinter_point.hpp"
+#include "formatted.hpp"
 
 namespace {
 
@@ -114,9 +114,10 @@ Deviation run_sliding_turn() {
 TEST_CASE("UINTER: a sliding joint keeps its traction and tangent in space while its tangents turn 90 degrees",
           "[uinter][rotation]") {
   const Deviation dev = run_sliding_turn();
-  std::printf("[rotation] UINTER: |tau|/pressure %.6g before the turn, turn: shear deviation %.3g, DDSDDR "
-              "deviation %.3g\n",
-              dev.friction, dev.shear, dev.tangent);
+  INFO(
+      mj_test::formatted("[rotation] UINTER: |tau|/pressure %.6g before the turn, turn: shear deviation %.3g, DDSDDR "
+                         "deviation %.3g",
+                         dev.friction, dev.shear, dev.tangent));
   CHECK(dev.friction == Approx(std::tan(32 * kPi / 180)).epsilon(0.005));
   CHECK(dev.shear < 1e-9);
   CHECK(dev.tangent < 1e-6);

@@ -4,7 +4,6 @@
 // perturbation, unpaired points, the cut-back request and the error reports.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <vector>
@@ -55,9 +54,6 @@ double ddsddr_fd_error(Point pt, const double* r0, const double* r1, double h) {
     num += (analytic[k] - fd[k]) * (analytic[k] - fd[k]);
     den += analytic[k] * analytic[k];
   }
-  std::printf("[uinter] DDSDDR rel. FD error %.2e:", std::sqrt(num / den));
-  for (int k = 0; k < n * n; ++k) std::printf(" %.6g", analytic[k]);
-  std::printf("\n");
   return std::sqrt(num / den);
 }
 

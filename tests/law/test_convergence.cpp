@@ -6,12 +6,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <vector>
 
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -69,12 +69,9 @@ TEST_CASE("Invariant 9: each scheme converges at its order in the increment", "[
     int newton = 0, plastic = 0;
     h.push_back(1.0 / n);
     e.push_back(rel_error(end_traction(M, n, &newton, &plastic)));
-    std::printf("[order] %s, %4d increments per leg: rel. error %.3e, %.2f Newton iterations per plastic "
-                "increment\n",
-                S.name, n, e.back(), double(newton) / std::max(plastic, 1));
   }
   const double slope = loglog_slope(h, e);
-  std::printf("[order] %s: slope %.3f (stated %.2f to %.2f)\n", S.name, slope, S.order_min, S.order_max);
+  INFO(mj_test::formatted("[order] %s: slope %.3f (stated %.2f to %.2f)", S.name, slope, S.order_min, S.order_max));
   CAPTURE(e, slope);
   CHECK(slope > S.order_min);
   CHECK(slope < S.order_max);

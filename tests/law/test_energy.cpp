@@ -4,11 +4,11 @@
 // must match it within the scheme's stated closure (tests/support/schemes.hpp).
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -21,7 +21,7 @@ double closure_error(const Model& M, const Curve& c) {
 void check_closure(const SchemeUnderTest& S, const char* path, const Model& M, const Curve& c) {
   REQUIRE(c.all_ok);
   const double error = closure_error(M, c);
-  std::printf("[invariant 7] %s, %s: closure %.2e (stated %.0e)\n", S.name, path, error, S.closure);
+  INFO(mj_test::formatted("[invariant 7] %s, %s: closure %.2e (stated %.0e)", S.name, path, error, S.closure));
   CAPTURE(S.name, path);
   CHECK(error < S.closure);
 }

@@ -2,9 +2,9 @@
 // docs/model.md 9): what bounds it, and which failure each bound reports.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 
 #include "mortar/integration/increment.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 
@@ -30,8 +30,8 @@ TEST_CASE("Segments: restarts in one regime are not regime segments, and have th
       ++n.restarts;
     }
   }
-  std::printf("[increment] %ld restarts, %d switches: %s after %d segments asked\n", n.restarts, n.switches,
-              failure_name(first), segments_asked);
+  INFO(mj_test::formatted("[increment] %ld restarts, %d switches: %s after %d segments asked", n.restarts, n.switches,
+                          failure_name(first), segments_asked));
   CHECK(first == Failure::none);
   CHECK(n.restarts == 40);
   CHECK(n.switches == 3);

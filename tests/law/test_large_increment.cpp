@@ -6,12 +6,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "mortar/integrator.hpp"
 #include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -43,9 +43,10 @@ TEST_CASE("Large increments: one increment opening a joint to 10, 100, 1000 mm d
     State s;
     const IncrementResult r = integrate_increment(M, s, Vec3(opening, 0, 0));
     const double ratio = dissipated(s) / set.p.GIC;
-    std::printf("[large increment] %s, 0 -> %g mm in one increment: dissipation / GIC = %.7f (%d substeps, %d "
-                "rejected, flags %d)\n",
-                set.name, opening, ratio, r.status.substeps_accepted, r.status.substeps_rejected, r.status.flags);
+    INFO(mj_test::formatted(
+        "[large increment] %s, 0 -> %g mm in one increment: dissipation / GIC = %.7f (%d substeps, %d "
+        "rejected, flags %d)",
+        set.name, opening, ratio, r.status.substeps_accepted, r.status.substeps_rejected, r.status.flags));
     CAPTURE(set.name, opening, s.dissipation_plastic, s.dissipation_damage, s.energy_unilateral);
     REQUIRE(r.status.ok());
     CHECK_FALSE(r.status.fell_back());

@@ -4,13 +4,13 @@
 // ends on the regime boundary.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 #include <vector>
 
 #include "mortar/integration/local_problem.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -79,9 +79,6 @@ TEST_CASE("Implicit: the analytic Jacobian of the local problem matches central 
       const double err = (J - fd).norm() / J.norm();
       CAPTURE(c.name, x.transpose(), J, fd);
       CHECK(err < 1e-7);
-      const double ft = M.p.ft0 * surface_of(M, x[4], x[5], x[6]).s;
-      std::printf("[jacobian] %-32s dl %.3e sigma_n/ft %6.3f  rel. error %.2e  (Newton %d iterations, residual %.1e)\n",
-                  c.name, x[3], x[0] / ft, err, sol.iterations, sol.residual);
     }
   }
   // The step that ends on the regime boundary (sigma_n = 0 imposed, x[0] the
@@ -97,7 +94,8 @@ TEST_CASE("Implicit: the analytic Jacobian of the local problem matches central 
   Mat7 J;
   local_residual(M, lp, sol.x, &J);
   const double err = (J - fd_jacobian(M, lp, sol.x)).norm() / J.norm();
-  std::printf("[jacobian] %-32s theta %.3f  rel. error %.2e\n", "closed, step ending on the boundary", sol.x[0], err);
+  INFO(mj_test::formatted("[jacobian] %-32s theta %.3f  rel. error %.2e", "closed, step ending on the boundary",
+                          sol.x[0], err));
   CHECK(err < 1e-7);
 }
 

@@ -9,7 +9,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstdio>
 #include <random>
 
 #include "mortar/physics/elasticity.hpp"
@@ -19,6 +18,7 @@
 #include "random_parameters.hpp"
 #include "schemes.hpp"
 #include "test_scale.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -52,11 +52,12 @@ struct Tally {
       failure_not_exhausted = 0, failure_changed_state = 0, off_surface = 0;
   int failures = 0, failures_by_family[4] = {0, 0, 0, 0};
   int fallbacks = 0, not_flagged = 0;  // the chosen scheme failed and the fallback chain integrated the increment
+  std::string notes;                   // the first few offences of each kind
 };
 
 // Counts one offence and describes the first few.
-void offence(int& count, const char* what, int set, int family, int k) {
-  if (++count <= 3) std::printf("[invariant 10] %s: set %d, family %d, increment %d\n", what, set, family, k);
+void offence(Tally& t, int& count, const char* what, int set, int family, int k) {
+  if (++count <= 3) t.notes += mj_test::formatted("%s: set %d, family %d, increment %d; ", what, set, family, k);
 }
 
 void run_path(const SchemeUnderTest& S, const Model& M, std::mt19937& rng, int set, int family, State start,
@@ -75,7 +76,7 @@ void run_path(const SchemeUnderTest& S, const Model& M, std::mt19937& rng, int s
     if (r.status.fell_back()) {
       ++t.fallbacks;
       if (!(r.status.ok() && r.status.tangent_approximate && s.status == 0))
-        offence(t.not_flagged, "a fallback not flagged", set, family, k);
+        offence(t, t.not_flagged, "a fallback not flagged", set, family, k);
     }
     if (!r.status.ok()) {
       ++t.failures;
@@ -84,19 +85,19 @@ void run_path(const SchemeUnderTest& S, const Model& M, std::mt19937& rng, int s
       // start state (the solver cuts back).
       const bool exhausted = r.status.failure == Failure::local_solve_failed ||
                              r.status.failure == Failure::too_many_substeps;
-      if (!exhausted) offence(t.failure_not_exhausted, failure_name(r.status.failure), set, family, k);
+      if (!exhausted) offence(t, t.failure_not_exhausted, failure_name(r.status.failure), set, family, k);
       if (!(s.plastic == before.plastic && s.separation == before.separation))
-        offence(t.failure_changed_state, "a failure changed the state", set, family, k);
+        offence(t, t.failure_changed_state, "a failure changed the state", set, family, k);
     }
     if (!(r.traction.allFinite() && T.allFinite() && std::isfinite(r.elastic_energy)))
-      offence(t.non_finite, "non-finite traction, tangent or energy", set, family, k);
-    if (const char* rule = check_state(s)) offence(t.invalid_state, rule, set, family, k);
+      offence(t, t.non_finite, "non-finite traction, tangent or energy", set, family, k);
+    if (const char* rule = check_state(s)) offence(t, t.invalid_state, rule, set, family, k);
     if (!(s.dn >= before.dn && s.ds >= before.ds && s.wI >= before.wI))
-      offence(t.damage_decreased, "damage or work decreased", set, family, k);
+      offence(t, t.damage_decreased, "damage or work decreased", set, family, k);
     if (S.ends_on_surface && r.status.ok()) {
       // On or inside the surface: FTOL, with the slack the drift correction leaves.
       const double F = yield_function(r.traction, surface_of(M, s));
-      if (F > 10 * yield_tolerance(M, r.traction)) offence(t.off_surface, "off the surface", set, family, k);
+      if (F > 10 * yield_tolerance(M, r.traction)) offence(t, t.off_surface, "off the surface", set, family, k);
     }
   }
 }
@@ -110,23 +111,24 @@ TEST_CASE("Invariant 10: random parameters and paths never give NaN, failure or 
   Tally t;
   for (int set = 0; set < sets; ++set) {
     const Parameters p = mj_test::random_parameters(rng);
-    if (!validate(p).ok()) offence(t.invalid_parameters, "invalid parameter set", set, -1, -1);
+    if (!validate(p).ok()) offence(t, t.invalid_parameters, "invalid parameter set", set, -1, -1);
     const Model M = model_with(p, S.scheme);
     for (int family = 0; family < 4; ++family) run_path(S, M, rng, set, family, State{}, t);
     // Fully softened joint: opened far beyond separation, then everything again.
     State softened;
     const Vec3 opening(2 * p.ft0 / p.kn + 200 * p.GIC / p.ft0, 0, 0);
     for (int i = 0; i < S.softening_increments; ++i) integrate_increment(M, softened, opening / S.softening_increments);
-    if (!(std::abs(softened.dn - 1.0) <= 1e-6)) offence(t.not_softened, "not fully softened", set, -1, -1);
+    if (!(std::abs(softened.dn - 1.0) <= 1e-6)) offence(t, t.not_softened, "not fully softened", set, -1, -1);
     for (int family = 0; family < 4; ++family) run_path(S, M, rng, set, family, softened, t);
   }
-  std::printf("[invariant 10] %s: %ld increments, %ld plastic, %d failures (by family %d %d %d %d), %d integrated by "
-              "the fallback, %d off the surface, %d approximate tangents, %.1f Newton iterations per plastic increment "
-              "(max %d), %ld halvings\n",
-              S.name, t.increments, t.plastic, t.failures, t.failures_by_family[0], t.failures_by_family[1],
-              t.failures_by_family[2], t.failures_by_family[3], t.fallbacks, t.off_surface, t.approximate,
-              double(t.newton) / std::max(t.plastic, 1L), t.max_newton, t.rejected);
-  CAPTURE(S.name, t.increments, t.failures);
+  INFO(mj_test::formatted(
+      "[invariant 10] %s: %ld increments, %ld plastic, %d failures (by family %d %d %d %d), %d integrated by "
+      "the fallback, %d off the surface, %d approximate tangents, %.1f Newton iterations per plastic increment "
+      "(max %d), %ld halvings",
+      S.name, t.increments, t.plastic, t.failures, t.failures_by_family[0], t.failures_by_family[1],
+      t.failures_by_family[2], t.failures_by_family[3], t.fallbacks, t.off_surface, t.approximate,
+      double(t.newton) / std::max(t.plastic, 1L), t.max_newton, t.rejected));
+  CAPTURE(S.name, t.increments, t.failures, t.notes);
   CHECK(t.increments == 8L * 60 * sets);
   CHECK(t.invalid_parameters == 0);
   CHECK(t.not_softened == 0);

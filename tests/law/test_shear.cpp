@@ -3,13 +3,13 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstdio>
 
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -81,8 +81,8 @@ TEST_CASE("Invariant 5: plastic dilatancy ratio is tan(psi) R/|tau| of the regul
     worst = std::max(worst, std::abs((b.plastic[0] - a.plastic[0]) / dps - expected) / std::abs(expected));
     ++checked;
   }
-  std::printf("[invariant 5] %s: dilatancy ratio, worst rel. deviation %.2e over %d plastic increments\n", S.name,
-              worst, checked);
+  INFO(mj_test::formatted("[invariant 5] %s: dilatancy ratio, worst rel. deviation %.2e over %d plastic increments",
+                          S.name, worst, checked));
   CHECK(checked > 10000);
   CHECK(worst <= S.dilatancy_ratio);
 }

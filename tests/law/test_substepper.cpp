@@ -2,12 +2,12 @@
 // what one run() leaves for the next.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 
 #include "mortar/integration/substepper.hpp"
 #include "mortar/integrator.hpp"
 #include "mortar/state_layout.hpp"
 #include "paper_sets.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -75,10 +75,11 @@ TEST_CASE("Substepper: a run starts with no bracket of an earlier run, the norma
   const double done = reused.run(d2, surface_at(M, P));
   REQUIRE(st.ok());
 
-  std::printf("[substepper] second run: fresh %d substeps, sigma (%.17g, %.17g), dn %.17g; after a run stopped in "
-              "the bracket %d substeps, sigma (%.17g, %.17g), dn %.17g\n",
-              st_fresh.substeps_accepted, fresh.sigma[0], fresh.sigma[1], fresh.y.dn, st.substeps_accepted,
-              P.sigma[0], P.sigma[1], P.y.dn);
+  INFO(mj_test::formatted(
+      "[substepper] second run: fresh %d substeps, sigma (%.17g, %.17g), dn %.17g; after a run stopped in "
+      "the bracket %d substeps, sigma (%.17g, %.17g), dn %.17g",
+      st_fresh.substeps_accepted, fresh.sigma[0], fresh.sigma[1], fresh.y.dn, st.substeps_accepted, P.sigma[0],
+      P.sigma[1], P.y.dn));
   CHECK(done == done_fresh);
   CHECK(st.substeps_accepted == st_fresh.substeps_accepted);
   CHECK(st.substeps_rejected == st_fresh.substeps_rejected);

@@ -7,7 +7,6 @@
 // continuum tangent (Eq. 20) against the rate statement it linearises.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 #include <vector>
 
 #include "mortar/integration/rate_statement.hpp"
@@ -16,6 +15,7 @@
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
 #include "paper_sets.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -96,9 +96,6 @@ TEST_CASE("Implicit: the consistent tangent matches central differences of the s
     CHECK(t.result.status.plastic);
     CHECK_FALSE(t.result.status.tangent_approximate);
     CHECK(t.error < 1e-6);
-    std::printf("[tangent] %-46s rel. error %.2e  substeps %d/%d  Newton %d\n", c.name, t.error,
-                t.result.status.substeps_accepted, t.result.status.substeps_rejected,
-                t.result.status.newton_iterations);
   }
 }
 
@@ -187,9 +184,10 @@ TEST_CASE("Explicit: the continuum tangent after closing an open joint unloads t
       const double rate_error = (T * u - rate).norm() / rate.norm();
       const double matrix_error = (T - R).norm() / R.norm();
       CAPTURE(T, R, T_open, rate.transpose(), (T * u).transpose());
-      std::printf("[tangent] closing, %s, d = (%g, %g, %g): T_nn %.6g (rate statement %.6g, opening %.6g), "
-                  "|T - R|/|R| %.2e, |T u - rate|/|rate| %.2e\n",
-                  scheme_name(scheme), d[0], d[1], d[2], T(0, 0), R(0, 0), T_open(0, 0), matrix_error, rate_error);
+      INFO(mj_test::formatted(
+          "[tangent] closing, %s, d = (%g, %g, %g): T_nn %.6g (rate statement %.6g, opening %.6g), "
+          "|T - R|/|R| %.2e, |T u - rate|/|rate| %.2e",
+          scheme_name(scheme), d[0], d[1], d[2], T(0, 0), R(0, 0), T_open(0, 0), matrix_error, rate_error));
       CHECK(matrix_error < 1e-8);
       CHECK(rate_error < 1e-4);
       CHECK((T.col(0) - (1 - s.dn) * T_open.col(0)).norm() <= 1e-12 * T_open.norm());

@@ -2,11 +2,11 @@
 // secant, stiffness recovery on closure, in every scheme.
 #include <catch2/catch.hpp>
 
-#include <cstdio>
 
 #include "paper_sets.hpp"
 #include "paths.hpp"
 #include "schemes.hpp"
+#include "formatted.hpp"
 
 using namespace mortar;
 using namespace mortar::testing;
@@ -51,7 +51,8 @@ TEST_CASE("Invariant 2: pure opening peaks at ft0, dissipates GIC and ends separ
   CHECK(c.max_traction(0) == Approx(p.ft0).epsilon(1e-3));
   // Area under sigma_n - delta_n by the trapezoidal rule on the returned curve.
   const double area = c.external_work();
-  std::printf("[invariant 2] %s: GIC area rel. error %.2e (ft0 %.3g)\n", S.name, (area - p.GIC) / p.GIC, p.ft0);
+  INFO(mj_test::formatted("[invariant 2] %s: GIC area rel. error %.2e (ft0 %.3g)", S.name, (area - p.GIC) / p.GIC,
+                          p.ft0));
   CHECK(area == Approx(p.GIC).epsilon(5e-3));
   CHECK(std::abs(c.samples.back().traction[0]) < 1e-5 * p.ft0);
   CHECK(drive.state().dn == Approx(1.0).margin(1e-5));

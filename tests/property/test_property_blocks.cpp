@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "abi_block.hpp"
+#include "formatted.hpp"
 
 using namespace mj_property;
 
@@ -112,8 +113,9 @@ TEST_CASE("Property: identical results for any grouping of points into blocks (1
     }
     paths += n_points;
   }
-  std::printf("blocks: %ld paths, %ld point-calls compared bit for bit over %ld regrouped block calls, %ld differences\n",
-              paths, compared, calls, differences);
+  INFO(mj_test::formatted(
+      "blocks: %ld paths, %ld point-calls compared bit for bit over %ld regrouped block calls, %ld differences", paths,
+      compared, calls, differences));
   CHECK(paths == long(n_sets) * n_points);
   CHECK(differences == 0);
 }

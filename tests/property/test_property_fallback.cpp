@@ -17,13 +17,12 @@
 // one integrated by the fallback.
 #include <catch2/catch.hpp>
 
-#include <chrono>
-#include <cstdio>
 #include <map>
 #include <random>
 
 #include "abi_block.hpp"
 #include "worn_cases.hpp"
+#include "formatted.hpp"
 
 using namespace mj_property;
 using mortar::Failure;
@@ -45,6 +44,7 @@ struct Tally {
   std::map<std::pair<int, int>, long> rescued_by;    // (scheme, pieces) of the rung
   // Each of these must stay zero.
   long non_finite = 0, invalid = 0, damage_decreased = 0, not_flagged = 0, off_surface = 0;
+  std::string notes;  // the first few failures
 };
 
 // One increment, checked and tallied.
@@ -56,9 +56,9 @@ void step(const mortar::Model& M, State& s, const Vec3& d, Tally& t) {
   if (!r.status.ok()) {
     ++t.failures;
     if (t.failures <= 3)
-      std::printf("  failed: %s, separation (%.17g, %.17g, %.17g), increment (%.17g, %.17g, %.17g)\n",
-                  mortar::failure_name(r.status.failure), before.separation[0], before.separation[1],
-                  before.separation[2], d[0], d[1], d[2]);
+      t.notes += mj_test::formatted("failed: %s, separation (%.17g, %.17g, %.17g), increment (%.17g, %.17g, %.17g); ",
+                                    mortar::failure_name(r.status.failure), before.separation[0], before.separation[1],
+                                    before.separation[2], d[0], d[1], d[2]);
   }
   if (r.status.fell_back()) {
     ++t.first_failures;
@@ -133,23 +133,23 @@ void run_set(const mortar::Parameters& p, Scheme scheme, bool worn_cases, std::m
     for (const WornCase& w : kWornCases) worn_case_path(w, scheme, rng, t);
 }
 
-void report(const char* what, const Tally& t, double seconds) {
-  std::printf("[fallback] %s: %ld point-increments in %.1f s; the chosen scheme failed on %ld (by code:", what,
-              t.increments, seconds, t.first_failures);
-  for (const auto& [code, n] : t.first_by_code) std::printf(" %d x%ld", code, n);
-  std::printf("), rescued by:");
+// What a tally measured, shown when a check fails.
+std::string summary(const char* what, const Tally& t) {
+  std::string text = mj_test::formatted("%s: %ld point-increments; the chosen scheme failed on %ld (by code:", what,
+                                        t.increments, t.first_failures);
+  for (const auto& [code, n] : t.first_by_code) text += mj_test::formatted(" %d x%ld", code, n);
+  text += "), rescued by:";
   for (const auto& [rung, n] : t.rescued_by)
-    std::printf(" %s x%d: %ld", mortar::scheme_name(static_cast<Scheme>(rung.first)), rung.second, n);
-  std::printf("; failures %ld\n", t.failures);
+    text += mj_test::formatted(" %s x%d: %ld", mortar::scheme_name(static_cast<Scheme>(rung.first)), rung.second, n);
+  return text + mj_test::formatted("; failures %ld; ", t.failures) + t.notes;
 }
 
 // `sets` random parameter sets (seed `seed`) of 10 paths each, in `scheme`.
 void check_no_failure(const char* what, Scheme scheme, unsigned seed, int sets) {
   std::mt19937 rng(seed);
   Tally t;
-  const auto t0 = std::chrono::steady_clock::now();
   for (int set = 0; set < scaled(sets); ++set) run_set(random_parameters(rng), scheme, set % 2 == 0, rng, t);
-  report(what, t, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  INFO(summary(what, t));
   CHECK(t.increments >= long(scaled(sets)) * kPathsPerSet * kIncrements);
   CHECK(t.failures == 0);
   CHECK(t.non_finite == 0);

@@ -21,6 +21,7 @@
 
 #include "abi_block.hpp"
 #include "paper_sets.hpp"
+#include "formatted.hpp"
 
 using namespace mj_property;
 
@@ -137,7 +138,7 @@ TEST_CASE("Restart: a state array saved and restored mid-path continues exactly 
     for (int k = 0; k < n; ++k) CHECK(whole.state_of(k)[slot::status] == 0);
     paths += n;
   }
-  std::printf("restart: %ld paths saved and restored mid-path, %ld differences\n", paths, differences);
+  INFO(mj_test::formatted("restart: %ld paths saved and restored mid-path, %ld differences", paths, differences));
   CHECK(paths == 16L * sets);
   CHECK(differences == 0);
 }
@@ -203,8 +204,6 @@ TEST_CASE("Corruption: a state array with impossible values is reported, not pro
       }
     }
   }
-  std::printf("corruption: %zu corrupted states x 2 histories x 2 calls, %d reported as expected\n", cases.size(),
-              reported);
 }
 
 TEST_CASE("Corruption: garbage in the slots the routine only writes (SDV 19-21) is harmless", "[corruption]") {
@@ -278,5 +277,4 @@ TEST_CASE("Bad input: finite but absurd increments give finite outputs or a repo
       }
     }
   }
-  std::printf("absurd increments: %d accepted with finite results, %d rejected and reported\n", accepted, rejected);
 }

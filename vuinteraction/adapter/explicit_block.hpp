@@ -59,17 +59,17 @@ struct ExplicitBlock {
   Real *flux_slv = nullptr, *flux_mst = nullptr;
 
   // The arrays the routine writes, in the order both argument lists share.
-  void set_outputs(Real* stress_, Real* state_, Real* sed_, Real* spd_, Real* sfd_, Real* scd_, Real* svd_,
-                   Real* flux_slv_, Real* flux_mst_) {
-    stress = stress_;
-    state = state_;
-    sed = sed_;
-    spd = spd_;
-    sfd = sfd_;
-    scd = scd_;
-    svd = svd_;
-    flux_slv = flux_slv_;
-    flux_mst = flux_mst_;
+  void set_outputs(Real* stress, Real* state, Real* sed, Real* spd, Real* sfd, Real* scd, Real* svd, Real* flux_slv,
+                   Real* flux_mst) {
+    this->stress = stress;
+    this->state = state;
+    this->sed = sed;
+    this->spd = spd;
+    this->sfd = sfd;
+    this->scd = scd;
+    this->svd = svd;
+    this->flux_slv = flux_slv;
+    this->flux_mst = flux_mst;
   }
 
   Real* state_of(int k) const { return state + k * state_stride; }
@@ -103,7 +103,7 @@ struct ExplicitBlock {
   // first paired point (in 3D) whose dRot is not a rotation is reported and
   // rejects the block. Returns its adapter code, or 0. Sets any_turn: where
   // no paired point turns (every unrotated or 2D analysis), the per-point
-  // paths skip their own test of dRot (about fifteen instructions a point).
+  // paths skip their own test of dRot.
   int check_points(const Caller& who, const ArgumentNames& names) {
     any_turn = false;
     if (counts.n_dir != 3) return 0;
@@ -204,12 +204,16 @@ struct ExplicitBlock {
     return mortar::Vec3((reference - pen) - s.separation[0], double(dd[1]), counts.n_dir > 2 ? double(dd[2]) : 0.0);
   }
 
-  // The adapter's own slots obey their rules: the open flag (SDV 15) and the
-  // initialised flag (SDV 23) are 0 or 1. The law reads the open flag as a
-  // bool, so a corrupted 0.5 or NaN would silently become "open".
+  // The adapter's own slots obey their rule: the open flag (SDV 15) and the
+  // initialised flag (SDV 23) are 0 or 1, for one point or the lanes (a
+  // mask). The law reads the open flag as a bool, so a corrupted 0.5 or NaN
+  // would silently become "open".
+  template <class T>
+  static auto flag_valid(T x) {
+    return (x == 0.0) | (x == 1.0);
+  }
   static bool flags_valid(const Real* st) {
-    auto flag = [](Real x) { return (x == Real(0)) | (x == Real(1)); };
-    return flag(st[mortar::slot::open]) & flag(st[mortar::slot::initialised]);
+    return flag_valid(st[mortar::slot::open]) & flag_valid(st[mortar::slot::initialised]);
   }
 
   // The law's traction in Abaqus's signs: pressure positive, shear_sign * tau.
@@ -220,22 +224,6 @@ struct ExplicitBlock {
     stress_k[0] = Real(-traction[0]);
     stress_k[1] = Real(setup.shear_sign * traction[1]);
     stress_k[2] = counts.n_dir == 2 ? Real(0) : Real(setup.shear_sign * traction[2]);
-  }
-
-  // The law rejected the increment: it kept the start state; only the counts
-  // and the status change, and the start traction goes out if finite.
-  int keep_rejected(const Setup& setup, int k, Real* st, const mortar::State& s,
-                    const mortar::IncrementResult& r) const {
-    st[mortar::slot::substeps_accepted] = Real(s.substeps_accepted);
-    st[mortar::slot::substeps_rejected] = Real(s.substeps_rejected);
-    st[mortar::slot::status] = Real(s.status);
-    Real* stress_k = stress_of(k);
-    Real stress_start[3];
-    abaqus_stress(setup, r.traction, stress_start);
-    std::copy(stress_start, stress_start + counts.n_dir, stress_k);
-    write_energies(k, r.elastic_energy, 0.0);
-    if (!all_finite(stress_k, counts.n_dir) || !std::isfinite(double(sed[k]))) keep_start_outputs(k);
-    return static_cast<int>(r.status.failure);
   }
 
   // Most point-updates (the elastic shortcut, docs/architecture.md): a valid state
@@ -273,8 +261,8 @@ struct ExplicitBlock {
     if (first && !std::isfinite(double(st[slot::reference_penetration]))) return kTakesFullPath;
     mortar::IncrementResult r;
     if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kTakesFullPath;
-    // Fixed counts, so that the checks and copies are a few instructions
-    // rather than loops: in 2D the third component is not an output.
+    // Fixed counts, so that the checks and copies need no loops: in 2D the
+    // third component is not an output.
     Real out[4];
     abaqus_stress(setup, r.traction, out);
     out[3] = Real(r.elastic_energy);
@@ -292,10 +280,10 @@ struct ExplicitBlock {
   // The elastic shortcut for points k .. k + kWidth - 1 at once
   // (adapter/explicit_block_lanes.hpp).
   unsigned elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const;
-  struct LaneRules;
+  struct LaneCheckInputs;
   void load_lane(const StateStorage<Real>& storage, int k, int lane, mortar::lanes::ElasticLanes& y,
-                 LaneRules& rules) const;
-  static mortar::lanes::Mask lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneRules& rules);
+                 LaneCheckInputs& checks) const;
+  static mortar::lanes::Mask lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneCheckInputs& checks);
   static mortar::lanes::Mask fits_in_real(const mortar::lanes::ElasticLaneResult& r);
 #endif
 
@@ -315,52 +303,18 @@ struct ExplicitBlock {
     if (counts.n_dir == 3) stress_k[2] = out[2];
   }
 
-  // integrate_point's store in double precision: the law's end state,
-  // traction and energies are finite (integrate_increment's promise, which
-  // integrate_with checks, d_inelastic() included), and SDV 22 was finite or
-  // the increment was rejected: everything
-  // goes straight into the caller's arrays.
+  // The full path's stores (adapter/explicit_block_store.hpp): a rejected
+  // increment's counts and start outputs; the end state, stress and energies
+  // in double precision, or in single precision checked before any is stored.
+  int keep_rejected(const Setup& setup, int k, Real* st, const mortar::State& s,
+                    const mortar::IncrementResult& r) const;
   int store_double(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
-                   const mortar::IncrementResult& r, bool first) const {
-    storage.store(s, st);
-    if (first) mark_initialised(k, st);
-    Real stress_end[3];
-    abaqus_stress(setup, r.traction, stress_end);
-    write_stress(k, stress_end);
-    write_energies(k, r.elastic_energy, r.d_inelastic());
-    return 0;
-  }
-
-  // integrate_point's store in single precision: the law's result as floats,
-  // a double beyond a float's range coming back as infinity, checked before
-  // anything is stored (the state staged in a copy). The count a constant in
-  // each branch, so that the copies and the finite test are a few vector
-  // instructions rather than calls of memcpy and loops.
+                   const mortar::IncrementResult& r, bool first) const;
   int store_float(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
-                  const mortar::IncrementResult& r, bool first) const {
-    if (storage.flags) return store_float_over<mortar::kFlaggedStateCount>(setup, storage, k, st, s, r, first);
-    if (storage.pairs) return store_float_over<mortar::kPairedStateCount>(setup, storage, k, st, s, r, first);
-    return store_float_over<mortar::kStateCount>(setup, storage, k, st, s, r, first);
-  }
+                  const mortar::IncrementResult& r, bool first) const;
   template <int kCount>
   int store_float_over(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
-                       const mortar::IncrementResult& r, bool first) const {
-    Real end[kCount];
-    std::copy(st, st + kCount, end);
-    storage.store_into(s, end);
-    if (first) mark_initialised(k, end);
-    Real stress_end[3];
-    abaqus_stress(setup, r.traction, stress_end);
-    const Real sed_end = Real(r.elastic_energy);
-    const Real spd_end = Real(r.d_inelastic());
-    const Real energies[2] = {sed_end, spd_end};
-    if (!all_finite(end, kCount) || !all_finite(stress_end, 3) || !all_finite(energies, 2))
-      return reject_point(k, mortar::Failure::non_finite_result);
-    std::copy(end, end + kCount, st);
-    write_stress(k, stress_end);
-    write_energies(k, double(sed_end), double(spd_end));
-    return 0;
-  }
+                       const mortar::IncrementResult& r, bool first) const;
 
   // Integrates point k and writes its outputs. Returns the law's Failure code.
   int integrate_point(const Setup& setup, const StateStorage<Real>& storage, int k) const {
@@ -404,3 +358,4 @@ struct ExplicitBlock {
 }  // namespace mj_adapter
 
 #include "adapter/explicit_block_lanes.hpp"
+#include "adapter/explicit_block_store.hpp"

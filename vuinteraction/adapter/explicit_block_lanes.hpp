@@ -7,16 +7,17 @@
 namespace mj_adapter {
 
 #if MJ_ELASTIC_LANES
-// The values of the lanes' rules that the increment does not read.
+// What the lanes' check (lane_candidates) reads besides the increment's
+// start: the state's other rules and the point's call arguments.
 template <class Real>
-struct ExplicitBlock<Real>::LaneRules {
+struct ExplicitBlock<Real>::LaneCheckInputs {
   mortar::lanes::D wIII, dissipation_damage, penetration, substeps_accepted, initialised, turn;
   mortar::lanes::Mask loaded;  // finite SDV 1-18, every float pair canonical
 };
 
 template <class Real>
 void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, int lane,
-                                    mortar::lanes::ElasticLanes& y, LaneRules& rules) const {
+                                    mortar::lanes::ElasticLanes& y, LaneCheckInputs& checks) const {
   namespace slot = mortar::slot;
   const Real* st = state_of(k);
   const double pen = penetration_of(k);
@@ -38,25 +39,24 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   y.d[0][lane] = (double(st[slot::reference_penetration]) - pen) - v[8];
   y.d[1][lane] = double(dd[1]);
   y.d[2][lane] = counts.n_dir > 2 ? double(dd[2]) : 0.0;
-  rules.wIII[lane] = v[5];
-  rules.dissipation_damage[lane] = double(st[slot::dissipation_damage]);
-  rules.penetration[lane] = pen;
-  rules.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
-  rules.initialised[lane] = double(st[slot::initialised]);
-  rules.turn[lane] = may_turn() ? double(distance_from_identity(d_rot_of(k))) : 0.0;
-  rules.loaded[lane] = canonical && finite ? -1 : 0;
+  checks.wIII[lane] = v[5];
+  checks.dissipation_damage[lane] = double(st[slot::dissipation_damage]);
+  checks.penetration[lane] = pen;
+  checks.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
+  checks.initialised[lane] = double(st[slot::initialised]);
+  checks.turn[lane] = may_turn() ? double(distance_from_identity(d_rot_of(k))) : 0.0;
+  checks.loaded[lane] = canonical && finite ? -1 : 0;
 }
 
 // The lanes that elastic_point would take and that need none of its special
-// cases: flags_valid (the open flag 0 or 1; SDV 23 = 1: not a first call),
-// mortar::state_in_range with w_III = 0, paired, SDV 19 = 0, dRot the
-// identity.
+// cases: the state's rules (flag_valid, mortar::ranges_hold) with w_III = 0
+// and SDV 23 = 1 (not a first call), paired, SDV 19 = 0, dRot the identity.
 template <class Real>
-mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneRules& r) {
-  const mortar::lanes::Mask in_range = y.dn >= 0.0 && y.dn <= 1.0 && y.ds >= 0.0 && y.ds <= 1.0 && y.wI >= 0.0 &&
-                                       y.wII >= 0.0 && r.wIII == 0.0 && r.dissipation_damage >= 0.0;
-  return r.loaded && in_range && (y.h == 0.0 || y.h == 1.0) && r.initialised == 1.0 &&
-         r.penetration > kUnpairedPenetration && r.substeps_accepted == 0.0 && r.turn == 0.0;
+mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneCheckInputs& r) {
+  const mortar::lanes::Mask rules =
+      flag_valid(y.h) & mortar::ranges_hold(y.dn, y.ds, y.wI, y.wII, r.wIII, r.dissipation_damage);
+  return r.loaded && rules && r.wIII == 0.0 && r.initialised == 1.0 && r.penetration > kUnpairedPenetration &&
+         r.substeps_accepted == 0.0 && r.turn == 0.0;
 }
 
 // The lanes proved elastic whose end values all fit in Real. In single
@@ -84,9 +84,9 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
   namespace slot = mortar::slot;
   using mortar::lanes::kWidth;
   mortar::lanes::ElasticLanes y;
-  LaneRules rules;
-  for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y, rules);
-  y.candidate = lane_candidates(y, rules);
+  LaneCheckInputs checks;
+  for (int l = 0; l < kWidth; ++l) load_lane(storage, k + l, l, y, checks);
+  y.candidate = lane_candidates(y, checks);
   const mortar::lanes::ElasticLaneResult r = mortar::lanes::elastic_increment_lanes(setup.model, y);
   const mortar::lanes::Mask take = fits_in_real(r);
   unsigned done = 0;

@@ -189,8 +189,8 @@ struct StateStorage {
                               st[slot::reference_penetration], outputs[0], outputs[1], outputs[2], outputs[3], 0};
     if (!mortar::all_finite_values(tested)) return false;
     if (turned) {
-      mortar::pair_of(s.plastic[1], tan[0], tan[2]);
-      mortar::pair_of(s.plastic[2], tan[1], tan[3]);
+      mortar::split_into_pair(s.plastic[1], tan[0], tan[2]);
+      mortar::split_into_pair(s.plastic[2], tan[1], tan[3]);
       tan[4] = float(s.crack[1]);
       tan[5] = float(s.crack[2]);
       if (!mortar::all_finite(tan, 6)) return false;
@@ -211,7 +211,7 @@ struct StateStorage {
   // The separation's float pairs: high parts in sep[0..2], low parts in
   // sep[3..5].
   static void separation_pairs(const mortar::State& s, float (&sep)[6]) {
-    for (int i = 0; i < 3; ++i) mortar::pair_of(s.separation[i], sep[i], sep[3 + i]);
+    for (int i = 0; i < 3; ++i) mortar::split_into_pair(s.separation[i], sep[i], sep[3 + i]);
   }
   static void store_separation_pairs(const float (&sep)[6], float* st) {
     for (int i = 0; i < 3; ++i) {

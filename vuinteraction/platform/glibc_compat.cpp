@@ -1,20 +1,11 @@
-// Linked into the Linux libraries for Abaqus (libexplicitU.so,
-// libexplicitU-D.so, libstandardU.so) so that they load on the oldest glibc
-// the Abaqus releases run on (2.28; docs/abaqus.md, "Which Linux"):
-//
-//  - exp, log and hypot are called through their oldest symbol versions
-//    (GLIBC_2.2.5). Newer versions of the same functions exist only to drop
-//    the SVID error-handling wrapper; on a given glibc both versions return
-//    the same value for every argument the law passes (finite, no overflow).
-//    The libraries are linked with --wrap=exp,log,hypot, so every call the
-//    law makes lands here.
-//  - The static C++ runtime asks glibc whether the process is single-threaded
-//    (__libc_single_threaded, a variable of newer glibc). Defined here, local
-//    to the library, as "not known to be": the runtime always takes its
-//    thread-safe path (atomic reference counts, locked static
-//    initialisation), which is right in any process.
-//
+// Linked into the Linux libraries for Abaqus so that they load on the oldest
+// glibc the Abaqus releases run on (docs/abaqus.md, "Which Linux"): exp,
+// log and hypot through their oldest symbol versions (--wrap=exp,log,hypot:
+// every call of the law lands here; the values are the same), and
+// __libc_single_threaded defined as "not known to be", so that the static
+// C++ runtime always takes its thread-safe path.
 // tests/abi/check_linux_library.cmake checks the result with objdump -T.
+// The rest: docs/adapters.md, section 10.
 extern "C" {
 
 __attribute__((visibility("hidden"))) char __libc_single_threaded = 0;

@@ -1,14 +1,10 @@
-// Windows: Abaqus's exit utilities for the DLLs (explicitU.dll,
-// explicitU-D.dll, standardU.dll). On Linux the library leaves xplb_exit_ and
-// xit_ undefined and the loader binds them to Abaqus's; a Windows DLL must
-// resolve every symbol when it is linked, and the library of Abaqus that
-// exports them is not at hand when this one is built. So the adapters' calls
-// of xplb_exit_ / xit_ land here, and the utility is looked up, under the name
-// Intel Fortran gives it on Windows (XPLB_EXIT, XIT: upper case, no
-// underscore), among the modules loaded in the process when it is first
-// needed: that is, only on an error that stops the analysis. Should no module
-// export it, the message already written is followed by one more line, and
-// the process is stopped with abort().
+// Windows: Abaqus's exit utilities for the DLLs. A Windows DLL must resolve
+// every symbol when it is linked, and Abaqus's library that exports
+// xplb_exit_ / xit_ is not at hand then: the adapters' calls land here, and
+// the utility (XPLB_EXIT, XIT, as Intel Fortran names it on Windows) is
+// looked up among the process's modules when first needed, only on an error
+// that stops the analysis; without it, one more line and abort().
+// The rest: docs/adapters.md, section 11.
 #include <windows.h>
 // psapi.h after windows.h; version 2: the function is kernel32's.
 #define PSAPI_VERSION 2

@@ -22,14 +22,19 @@ inline std::array<double, 17> finite_state_values(const State& s) {
           s.energy_unilateral};
 }
 
-// The rules of a state (docs/model.md 3) as one test without a branch per
-// rule, for the path every increment takes: finite values, 0 <= d <= 1,
-// works >= 0, damage dissipation >= 0 (the open flag is a bool here; the
-// adapters check its slot). check_state names the rule a state breaks;
-// state_in_range is the rest when the values are known to be finite.
+// The rules of a state's ranges (docs/model.md 3), written once, as one test
+// without a branch per rule: 0 <= d <= 1, works >= 0, damage dissipation
+// >= 0, for one point (T = double) or the points in vector lanes (T =
+// lanes::D, a mask). With finite values (state_valid) they are every rule of
+// the state but the open flag's, a bool here (the adapters check its slot);
+// check_state names the rule a state breaks.
+template <class T>
+auto ranges_hold(T dn, T ds, T wI, T wII, T wIII, T dissipation_damage) {
+  return (dn >= 0.0) & (dn <= 1.0) & (ds >= 0.0) & (ds <= 1.0) & (wI >= 0.0) & (wII >= 0.0) & (wIII >= 0.0) &
+         (dissipation_damage >= 0.0);
+}
 inline bool state_in_range(const State& s) {
-  return (s.dn >= 0) & (s.dn <= 1) & (s.ds >= 0) & (s.ds <= 1) & (s.wI >= 0) & (s.wII >= 0) & (s.wIII >= 0) &
-         (s.dissipation_damage >= 0);
+  return ranges_hold(s.dn, s.ds, s.wI, s.wII, s.wIII, s.dissipation_damage);
 }
 inline bool state_valid(const State& s) {
   const std::array<double, 17> v = finite_state_values(s);

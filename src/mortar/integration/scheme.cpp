@@ -131,16 +131,11 @@ double ModifiedEuler::local_error(const Point& P, const Rates& r1, const Rates& 
                                   const Surface& S) const {
   const double floor = 1e-3 * M_.stress_scale;
   const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
-  // The softening factor relative to what is left of it: where s runs out
-  // (towards complete separation, kSeparated) an absolute error lets the
-  // place of the separation depend on the cuts (docs/model.md 7.1). A joint
-  // already fully softened (s_raw <= 0 at the start) keeps s = 0 whatever
-  // the works do, so nothing of the surface is in error there. A closed
-  // joint has no separation to place, and its mode-II work rate, (|tau| -
-  // <-sigma_n> tan(phi)) q, is a difference of traction-scale terms of size
-  // s c0: relative to s alone, the error would hold the traction's own error
-  // to STOL s c0, thousands of substeps per call as s runs towards 0. Below
-  // kClosedStrengthFloor it is measured against that floor.
+  // The softening factor relative to what is left of it (docs/model.md 7.1):
+  // where s runs out an absolute error lets the place of the separation
+  // depend on the cuts. A fully softened joint has no error in its surface;
+  // a closed one is measured against kClosedStrengthFloor.
+  // The rest: docs/numerics.md, section 20.
   const bool softened = 1.0 - P.y.wI / M_.p.GIC - P.y.wII / M_.p.GIIC <= 0;
   const double left = std::max(S.s, P.y.open ? kSeparated : kClosedStrengthFloor);
   const double e_s =

@@ -13,13 +13,13 @@ constexpr int kMaxCrossingCuts = 40;  // docs/model.md 6, regime switches inside
 }  // namespace
 
 double Substepper::run(const Vec3& d, const SurfaceAt& at) {
-  const Controls& c = M.controls;
-  at_ = at;
+  const Controls& c = M_.controls;
+  surface_at_start_ = at;
   // The floor follows the strength left (min_substep_floor); an increment no
   // longer than the material length keeps min_substep throughout.
   const double length = d.norm();
-  const bool bounded = length > M.substep_length;
-  scheme.set_floor(c.min_substep);
+  const bool bounded = length > M_.substep_length;
+  scheme_.set_floor(c.min_substep);
   at_boundary_ = false;
   // Every bracket starts closed: one left open by the run before (stopped
   // inside it) would cut this run's substeps towards another point's sizes.
@@ -34,42 +34,42 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   // Every pass of the loop counts against the budget, so no path through
   // it (cuts, relaxations) can spin forever.
   for (long pass = 0; T < 1; ++pass) {
-    if (st.work() >= c.max_substeps || pass >= 4L * c.max_substeps) {
-      st.failure = Failure::too_many_substeps;
+    if (st_.work() >= c.max_substeps || pass >= 4L * c.max_substeps) {
+      st_.failure = Failure::too_many_substeps;
       return T;
     }
-    if (const Failure f = scheme.budget_spent(st); f != Failure::none) {
-      st.failure = f;
+    if (const Failure f = scheme_.budget_spent(st_); f != Failure::none) {
+      st_.failure = f;
       return T;
     }
     // An elastic substep (unloading) left the point inside the surface: where
     // it yields again is the segment's to find (the elastic-plastic
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
-    if (unloaded && yield_of(P, at_) < -yield_tolerance(M, P.sigma)) return T;
-    if (bounded) scheme.set_floor(min_substep_floor(M, length, at_.S.s_raw));
+    if (unloaded && yield_of(P_, surface_at_start_) < -yield_tolerance(M_, P_.sigma)) return T;
+    if (bounded) scheme_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
-    with_psi(M, at_.S, P.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
-    const Rates r1 = stage(M, P, at_, dd);
+    with_psi(M_, surface_at_start_.S, P_.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)
+    const Rates r1 = stage(M_, P_, surface_at_start_, dd);
     if (r1.snapback) {  // no strain-driven solution from here
-      if (!relax(M, P, st, true)) {
-        st.failure = Failure::relaxation_failed;
+      if (!relax(M_, P_, st_, true)) {
+        st_.failure = Failure::relaxation_failed;
         return T;
       }
-      at_ = surface_at(M, P);
-      tangent.forget(st);
+      surface_at_start_ = surface_at(M_, P_);
+      tangent_.forget(st_);
       continue;
     }
     // On the fully softened normal the rest of the run is one scalar solve
     // (cone.hpp; docs/model.md 6, Decision - sliding on the cone), for every
     // scheme; not while a bracket is being closed.
     if (r1.plastic && !cut_.active && !sep_cut_.active) {
-      const ConeStep cone = cone_step(M, P, at_, (1 - T) * d, r1.grow);
+      const ConeStep cone = cone_step(M_, P_, surface_at_start_, (1 - T) * d, r1.grow);
       if (cone.done > 0) {
-        at_ = surface_at(M, P);
-        tangent.forget(st);
-        ++st.substeps_accepted;
+        surface_at_start_ = surface_at(M_, P_);
+        tangent_.forget(st_);
+        ++st_.substeps_accepted;
         T += cone.done * (1 - T);
         if (cone.separates) return std::min(T, 1.0);
         return 1;
@@ -77,22 +77,22 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     }
     // The apex zone of a worn open joint (in_apex_zone): backward-Euler
     // substeps, whatever the scheme (docs/model.md 6, Decision - the apex zone).
-    SubstepScheme& sch = in_apex_zone(M, P, at_) ? static_cast<SubstepScheme&>(apex_) : scheme;
-    const Attempt a = sch.attempt(P, dd, dT, r1);
+    SubstepScheme& sch = in_apex_zone(M_, P_, surface_at_start_) ? static_cast<SubstepScheme&>(apex_) : scheme_;
+    const Attempt a = sch.attempt(P_, dd, dT, r1);
     if (a.kind == Attempt::retry) {
       dT = a.size;
-      ++st.substeps_rejected;
+      ++st_.substeps_rejected;
       continue;
     }
     if (a.kind == Attempt::fail) {
-      st.failure = a.failure;
+      st_.failure = a.failure;
       return T;
     }
     if (a.kind == Attempt::on_boundary) return end_on_boundary(*a.end, T + a.theta * dT);
     // settle() and the landings change no work: SN is the surface of the
     // substep's end before and after them.
-    SurfaceAt at_Q;
-    const Surface& SN = at_Q.S = a.surface ? *a.surface : surface_of(M, a.end->y);
+    SurfaceAt surface_at_end;
+    const Surface& SN = surface_at_end.S = a.surface ? *a.surface : surface_of(M_, a.end->y);
     const Landing sep = separation(SN, dT);
     if (sep == Landing::cut) continue;
     const Landing normal = normal_completion(*a.end, SN, dT);
@@ -108,23 +108,23 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     Point& Q = *a.end;  // the scheme's own, which its next attempt overwrites
     if (switch_here) Q.y.plastic[0] = Q.y.separation[0];  // on the boundary: delta_e_n = 0
     sch.before_settle(Q);
-    settle(M, Q, P.y.elastic_separation(), sch.traits.branches_from_first_stage ? r1.grow : Branches{});
+    settle(M_, Q, P_.y.elastic_separation(), sch.traits.branches_from_first_stage ? r1.grow : Branches{});
     if (normal == Landing::lands) {
-      complete_normal_damage(M, Q.y);
-      Q.sigma = traction_of(M, Q.y);
+      complete_normal_damage(M_, Q.y);
+      Q.sigma = traction_of(M_, Q.y);
     }
     // A substep that lands on a boundary (regime or complete separation) is
     // exact there: neither rejected for drift nor drift-corrected off it.
     const bool lands = switch_here || separates;
-    at_Q.radius = shear_radius(Q.sigma, SN);
-    if (const double retry = sch.recheck(Q, at_Q, dT, lands); retry > 0) {
+    surface_at_end.radius = shear_radius(Q.sigma, SN);
+    if (const double retry = sch.recheck(Q, surface_at_end, dT, lands); retry > 0) {
       dT = retry;
-      ++st.substeps_rejected;
+      ++st_.substeps_rejected;
       continue;
     }
-    sch.commit(P, Q, at_Q, dd, T, dT, lands);
-    at_ = at_Q;
-    ++st.substeps_accepted;
+    sch.commit(P_, Q, surface_at_end, dd, T, dT, lands);
+    surface_at_start_ = surface_at_end;
+    ++st_.substeps_accepted;
     unloaded = !r1.plastic;
     T += dT;
     if (switch_here) {
@@ -149,10 +149,10 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
 // bisection as a safeguard, bracketed between a size that stays in the
 // regime and one that crosses), then the regime switches there.
 Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double& dT) {
-  const double e0 = P.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
-  const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(M, N.y);
-  const bool crossed = crosses(P.y.open, e1);
-  if (crossed && std::abs(e0) <= boundary_eps(M, P.y)) return Crossing::from_boundary;
+  const double e0 = P_.y.elastic_separation()[0], e1 = N.y.elastic_separation()[0];
+  const double near = 1e-9 * std::abs(dd[0]) + boundary_eps(M_, N.y);
+  const bool crossed = crosses(P_.y.open, e1);
+  if (crossed && std::abs(e0) <= boundary_eps(M_, P_.y)) return Crossing::from_boundary;
   bool on_boundary = false;
   if (crossed || cut_.active) {
     cut_.record(dT, e1, crossed, e0);
@@ -174,8 +174,8 @@ Substepper::Crossing Substepper::crossing(const Point& N, const Vec3& dd, double
 // log(s_raw / kSeparated), bisection as a safeguard), so that where the joint
 // separates does not depend on the cuts; settle() then disintegrates it.
 Substepper::Landing Substepper::separation(const Surface& SN, double& dT) {
-  if (!P.y.open) return Landing::none;
-  const double s0 = at_.S.s_raw, s1 = SN.s_raw;
+  if (!P_.y.open) return Landing::none;
+  const double s0 = surface_at_start_.S.s_raw, s1 = SN.s_raw;
   if (separated(s0)) return Landing::none;
   const double g1 = std::log(std::max(s1, 1e-300) / kSeparated);
   return one_sided(sep_cut_, sep_cuts_, dT, std::log(s0 / kSeparated), g1, g1 < -1e-9, std::abs(g1) <= 1e-9,
@@ -190,14 +190,14 @@ Substepper::Landing Substepper::separation(const Surface& SN, double& dT) {
 // complete separation: ft0, or, while the joint slides, the undamaged ...
 // The rest: docs/numerics.md, section 10.
 Substepper::Landing Substepper::normal_completion(const Point& N, const Surface& SN, double& dT) {
-  if (!P.y.open || !(P.y.dn < 1) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
+  if (!P_.y.open || !(P_.y.dn < 1) || !(N.y.elastic_separation()[0] > 0)) return Landing::none;
   auto g = [&](const Point& X, const ShearRadius& r) {
     const double tau = r.tau, R = r.R;
     const double sliding = R > 0 ? tau / R : 0.0;
-    const double left = kNormalComplete * std::max(M.stress_scale, sliding * M.p.kn * X.y.elastic_separation()[0]);
-    return (X.sigma[0] - left) / M.stress_scale;
+    const double left = kNormalComplete * std::max(M_.stress_scale, sliding * M_.p.kn * X.y.elastic_separation()[0]);
+    return (X.sigma[0] - left) / M_.stress_scale;
   };
-  const double g0 = g(P, at_.radius);
+  const double g0 = g(P_, surface_at_start_.radius);
   if (!(g0 > 0)) return Landing::none;
   const double g1 = g(N, shear_radius(N.sigma, SN));
   const bool landed = g1 < 0 && g1 >= -1e-9;
@@ -228,12 +228,12 @@ Substepper::Landing Substepper::one_sided(CrossingBracket& b, int& cuts, double&
 // accepted there, with delta_e_n = 0 exactly; `done` is the fraction of the
 // plastic part it reaches.
 double Substepper::end_on_boundary(const Point& N, double done) {
-  const Vec3 e_start = P.y.elastic_separation();
-  P = N;
-  P.y.plastic[0] = P.y.separation[0];
-  settle(M, P, e_start);
-  tangent.forget(st);
-  ++st.substeps_accepted;
+  const Vec3 e_start = P_.y.elastic_separation();
+  P_ = N;
+  P_.y.plastic[0] = P_.y.separation[0];
+  settle(M_, P_, e_start);
+  tangent_.forget(st_);
+  ++st_.substeps_accepted;
   at_boundary_ = true;
   return std::min(done, 1.0);
 }

@@ -19,7 +19,7 @@ namespace mortar {
 class Substepper {
  public:
   Substepper(const Model& M, Point& P, IntegrationStatus& st, TangentTracker& tangent, SubstepScheme& scheme)
-      : M(M), P(P), st(st), tangent(tangent), scheme(scheme), apex_(M, st, tangent) {}
+      : M_(M), P_(P), st_(st), tangent_(tangent), scheme_(scheme), apex_(M, st, tangent) {}
 
   // Plastic substepping over the separation increment d, starting on the
   // surface; `at` is the surface at P (surface_at). Returns the fraction of
@@ -50,14 +50,14 @@ class Substepper {
                     bool lands);
   double end_on_boundary(const Point& N, double done);
 
-  const Model& M;
-  Point& P;
-  IntegrationStatus& st;
-  TangentTracker& tangent;
-  SubstepScheme& scheme;
+  const Model& M_;
+  Point& P_;
+  IntegrationStatus& st_;
+  TangentTracker& tangent_;
+  SubstepScheme& scheme_;
   BackwardEuler apex_;  // the apex zone's substeps, every scheme
   bool at_boundary_ = false;
-  SurfaceAt at_;  // the surface at P, evaluated once per substep state
+  SurfaceAt surface_at_start_;  // the surface at P, evaluated once per substep state
   CrossingBracket cut_;
   int cuts_ = 0;
   CrossingBracket sep_cut_;

@@ -59,7 +59,7 @@ inline bool pair_canonical(float high, float low, double value) {
 // -O2/-O3 otherwise miscompiles float(value - double(float(value))) when it
 // vectorises two such lanes (below, load_state_pairs), taking the extension
 // of the truncation for value itself and writing a low part 0.
-inline void pair_of(double value, float& high, float& low) {
+inline void split_into_pair(double value, float& high, float& low) {
   float h = float(value);
 #if defined(__GNUC__) && (defined(__x86_64__) || defined(__i386__))
   asm("" : "+x"(h));

@@ -9,7 +9,6 @@
 #include "calibration/pipeline.hpp"
 #include "calibration/synthetic.hpp"
 #include "paper_sets.hpp"
-#include "test_scale.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -63,13 +62,10 @@ TEST_CASE("calibration recovers the parameters that made the curves", "[calibrat
 // softening alone slid to GIIC at its lower bound (RMS misfit 0.13, c0 15 %
 // off). The fit's second start (fit.cpp, softening_alone) must find the
 // true basin: GIIC within 5 % and a misfit at the noise level.
-TEST_CASE("calibration of Almeida M15's curves does not stop where GIIC vanishes", "[calibration]") {
-  // About 600 simulated tests: minutes under the sanitizers, where the test
-  // above runs the same code (test_scale.hpp).
-  if (mj_test::property_scale() < 1) {
-    WARN("scaled run (MJ_PROPERTY_SCALE): the M15 calibration is left to the unscaled suite");
-    return;
-  }
+// About 600 simulated tests: minutes under the sanitizers, which leave the
+// [full-size] tests out (tests/harness/CMakeLists.txt); the test above runs
+// the same code there.
+TEST_CASE("calibration of Almeida M15's curves does not stop where GIIC vanishes", "[calibration][full-size]") {
   const Parameters truth = testing::almeida_m15();
   FitResult fit;
   const Calibration c = calibrate_synthetic(truth, 12, fit);
@@ -85,12 +81,9 @@ TEST_CASE("calibration of Almeida M15's curves does not stop where GIIC vanishes
 // sigma_n must reach the noise. Started from the one set's optimum, where n
 // has no effect and was held, the per-level fit stayed at the one set's 0.23
 // (pipeline.cpp starts it from the rules).
-TEST_CASE("m and n per normal stress fit curves made with Table 1's per-level m and n", "[calibration]") {
-  // About 800 simulated tests: left to the unscaled suite, as the test above.
-  if (mj_test::property_scale() < 1) {
-    WARN("scaled run (MJ_PROPERTY_SCALE): the per-level calibration is left to the unscaled suite");
-    return;
-  }
+// About 800 simulated tests: [full-size], as the test above.
+TEST_CASE("m and n per normal stress fit curves made with Table 1's per-level m and n",
+          "[calibration][full-size]") {
   using testing::van_der_pluijm;
   const std::vector<Parameters> truth = {van_der_pluijm(-0.5), van_der_pluijm(-0.1), van_der_pluijm(-0.5),
                                          van_der_pluijm(-1.0)};

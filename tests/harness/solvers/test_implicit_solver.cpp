@@ -10,11 +10,10 @@
 //   - PNEWDT honoured: cut-backs leave no trace, their number is bounded;
 //   - the limitation: traction control at a brittle peak with two free
 //     components, where Newton cycles and the run fails clearly.
-// The residual sequences are printed on stdout (visible with ctest -V).
+// A failed check shows the residual sequences (INFO).
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -120,14 +119,12 @@ TEST_CASE("Newton on UINTER's DDSDDR converges quadratically on a plastic soften
   CHECK(implicit.curve[last].traction[1] < implicit.curve[last - 1].traction[1]);  // softening
   const ResidualSequence& r = implicit.attempts.back();
   REQUIRE(r.step == 3);
-  std::printf("implicit solver, vdP -0.5 MPa, 1e-2 mm slip increment on the softening branch, residuals: %s\n",
-              format_residuals(r).c_str());
   INFO("residuals: " << format_residuals(r));
   REQUIRE(r.outcome == AttemptOutcome::converged);
   REQUIRE(r.count >= 3);
   CHECK(r.residual[r.count - 1] <= 1e-9);
   const double order = observed_order(r), c = quadratic_constant(r, 1e-1);
-  std::printf("  observed order %.3f, max r_k+1/r_k^2 = %.3g /MPa\n", order, c);
+  INFO("observed order " << order << ", max r_k+1/r_k^2 = " << c << " /MPa");
   CHECK(order > 1.8);
   CHECK(c <= 1.0);
 
@@ -139,8 +136,7 @@ TEST_CASE("Newton on UINTER's DDSDDR converges quadratically on a plastic soften
   explicit_scheme.options.max_iterations = 60;         // which is slow at the peak
   const ImplicitRecord control = run_implicit(params.values, protocol, explicit_scheme);
   const ResidualSequence& rc = control.attempts.back();
-  std::printf("  control, modified Euler (continuum tangent), residuals: %s, observed order %.3f\n",
-              format_residuals(rc).c_str(), observed_order(rc));
+  INFO("control, modified Euler (continuum tangent), residuals: " << format_residuals(rc));
   CHECK(replay(params.values, Scheme::modified_euler, control.curve, last).status.tangent_approximate);
   CHECK(observed_order(rc) < 1.5);
   CHECK(quadratic_constant(rc, 1e-1) > 1.0);
@@ -153,10 +149,8 @@ TEST_CASE("The implicit solver shows quadratic convergence in the worst incremen
   const ImplicitRecord implicit = run_implicit(params.values, protocol, ImplicitSettings{});
   REQUIRE(implicit.stats.has_worst);
   const ResidualSequence& w = implicit.stats.worst;
-  std::printf("vdP -0.5 MPa program, implicit solver: %ld increments, %ld calls; most iterations: step %d, "
-              "increment %ld: %s\n",
-              implicit.stats.increments, implicit.stats.calls, w.step, w.increment, format_residuals(w).c_str());
-  INFO("residuals: " << format_residuals(w));
+  INFO("most iterations: step " << w.step << ", increment " << w.increment << ", residuals: "
+                                 << format_residuals(w));
   CHECK(implicit.stats.attempts == implicit.stats.increments);  // no cut-back
   CHECK(implicit.stats.max_traction_residual <= 1e-9);
   CHECK(w.count <= 4);
@@ -184,9 +178,7 @@ TEST_CASE("Implicit and explicit solvers agree on the vdP -0.5 MPa program with 
   // within twice it of each other; tau follows from the (slightly different)
   // normal separations, and the difference shrinks with the tolerance.
   const CurveDifference d = difference(implicit.curve, explicit_curve);
-  std::printf("traction tolerance %g MPa: implicit vs explicit solver (scheme 3): max |d sigma_n| %.3e, max |d tau| "
-              "%.3e MPa\n",
-              tolerance, d.normal, d.shear);
+  INFO("max |d sigma_n| " << d.normal << ", max |d tau| " << d.shear << " MPa");
   CHECK(d.normal <= 2 * tolerance);
   CHECK(d.shear <= 10 * tolerance);
 }
@@ -217,11 +209,9 @@ TEST_CASE("The implicit solver reproduces the modified-Euler curve to the implic
     peak = std::max(peak, reference[i].traction[1]);
   }
   const double dissipation = coarse.back().dissipation / reference.back().dissipation - 1;
-  std::printf("implicit solver vs modified Euler (STOL 1e-8), vdP -0.5 MPa: max |d tau| %.3e MPa (%.2e of the peak, "
-              "at slip %.4f mm), halved increments %.3e MPa (ratio %.3f), Richardson %.3e MPa; dissipation %.2e "
-              "relative\n",
-              e_h.shear, e_h.shear / peak, coarse[e_h.shear_at].separation[1], e_h2.shear, e_h.shear / e_h2.shear,
-              extrapolated, dissipation);
+  INFO("max |d tau| " << e_h.shear << " MPa (" << e_h.shear / peak << " of the peak, at slip "
+                       << coarse[e_h.shear_at].separation[1] << " mm), halved increments " << e_h2.shear
+                       << " MPa, Richardson " << extrapolated << " MPa; dissipation " << dissipation << " relative");
   CHECK(e_h.shear <= 5e-4);          // 3.6e-4 MPa measured: 1e-4 mm increments after 0.03 mm of slip
   CHECK(e_h.normal <= 2e-9);         // held by traction control in both
   CHECK(e_h.shear / e_h2.shear == Approx(2.0).margin(0.1));  // first order
@@ -240,10 +230,11 @@ TEST_CASE("PNEWDT < 1 cuts the increment back and abandoned attempts leave no tr
   const ImplicitRecord cut = run_implicit(params.values, protocol, budget);
   // Assert: cut-backs by the routine, each retried from the same start with
   // PNEWDT times the size; converged pieces follow each other up to the end.
-  std::printf("cut-backs on PNEWDT: %ld; attempts (fractions of the increment):", cut.stats.cuts_by_routine);
+  std::string attempts;
   for (const ResidualSequence& a : cut.attempts)
-    std::printf(" [%g, %g) %s;", a.start, a.start + a.size, a.outcome == AttemptOutcome::converged ? "ok" : "cut");
-  std::printf("\n");
+    attempts += " [" + std::to_string(a.start) + ", " + std::to_string(a.start + a.size) + ") " +
+                (a.outcome == AttemptOutcome::converged ? "ok;" : "cut;");
+  INFO("attempts (fractions of the increment):" << attempts);
   REQUIRE(cut.stats.cuts_by_routine >= 1);
   REQUIRE(cut.attempts.back().outcome == AttemptOutcome::converged);
   CHECK(cut.attempts.back().start + cut.attempts.back().size == 1.0);
@@ -306,7 +297,7 @@ TEST_CASE("Traction control at a brittle peak with two free components: Newton c
     FAIL("the run should have failed");
   } catch (const RunFailure& e) {
     const std::string what = e.what();
-    std::printf("three_components.toml, --solver implicit: %s\n", what.c_str());
+    INFO(what);
     CHECK(what.find("Newton cycling between two iterates") != std::string::npos);
     CHECK(what.find("three_components.toml:12") != std::string::npos);
   }

@@ -1,0 +1,93 @@
+// The fuzz target's independent oracles: what docs/model.md section 2, 7.4
+// and docs/abaqus.md say of props and states, read here without the law's
+// own checks.
+#include <algorithm>
+#include <cmath>
+
+#include "fuzz_target.hpp"
+#include "mortar/integrator.hpp"
+
+namespace mj_fuzz {
+namespace {
+
+mortar::Controls controls_with_scheme(int scheme) {
+  mortar::Controls c;
+  c.scheme = static_cast<mortar::Scheme>(scheme);
+  return c;
+}
+
+// A low part belongs to its high part: both finite, and the low part at most
+// the float spacing above the high part's magnitude.
+bool pair_belongs(Real high, Real low) {
+  const float h = std::fabs(float(high));
+  return finite(double(high)) && finite(double(low)) && std::fabs(float(low)) <= std::nextafter(h, INFINITY) - h;
+}
+
+}  // namespace
+
+bool props_valid(const std::vector<Real>& props, int n_props) {
+  if (n_props < 14) return false;
+  const int n = std::min(n_props, 20);
+  std::vector<double> p(20, 0.0);
+  for (int i = 0; i < n; ++i) {
+    p[i] = double(props[i]);
+    if (!finite(p[i])) return false;
+  }
+  const double kn = p[0], ks = p[1], ft0 = p[2], c0 = p[3], GIC = p[4], GIIC = p[5], phi0 = p[6], phir = p[7],
+               m = p[8], psi0 = p[9], psir = p[10], nn = p[11], bn = p[12], bs = p[13];
+  if (!(kn > 0 && ks > 0 && ft0 > 0 && c0 > 0 && GIC > 0 && GIIC > 0)) return false;
+  if (!(phi0 < 90 && phir > 0 && phir <= phi0 && m >= 0)) return false;
+  if (!(psi0 < 90 && psir >= 0 && psir <= psi0 && nn >= 0 && bn >= 0 && bs >= 0)) return false;
+  if (!(c0 > ft0 * std::tan(phi0 * (3.14159265358979323846 / 180.0)))) return false;
+  const double scheme = p[14], stol = p[15], ftol = p[16], max_sub = p[17], min_sub = p[18], sign = p[19];
+  // Which schemes exist is the law's business (it grows): ask it, for whole
+  // numbers only.
+  if (!(scheme == 0 || (scheme == std::floor(scheme) && scheme >= 1 && scheme <= 9 &&
+                        mortar::validate(controls_with_scheme(int(scheme))).ok())))
+    return false;
+  if (!(stol == 0 || (stol > 0 && stol < 1))) return false;
+  if (!(ftol == 0 || (ftol > 0 && ftol < 1))) return false;
+  if (!(max_sub == 0 || (max_sub == std::floor(max_sub) && max_sub >= 1 && max_sub <= 1e9))) return false;
+  if (!(min_sub == 0 || (min_sub > 0 && min_sub <= 1))) return false;
+  if (!(sign == 0 || sign == 1 || sign == -1)) return false;
+  return true;
+}
+
+// The slots the routine owns per point: SDV 1-23, and SDV 24-34 for single
+// precision's float pairs when nStates >= 34.
+int owned_slots(int n_states) {
+  return sizeof(Real) == 4 && n_states >= mortar::kPairedStateCount ? mortar::kPairedStateCount : kSlots;
+}
+
+// State variable i as the routine reads it: a paired variable's value is its
+// high part plus its low part, summed in double.
+double value(const Real* s, int i, bool paired) {
+  if (paired)
+    for (const mortar::SlotPair& p : mortar::kPairedSlots)
+      if (p.high == i) return double(s[p.high]) + double(s[p.low]);
+  return double(s[i]);
+}
+
+
+// The documented rules of an incoming state (docs/model.md section 3, the
+// law's check_state, and the adapter's flags).
+const char* state_violation(const Real* s, bool paired) {
+  if (paired)
+    for (const mortar::SlotPair& p : mortar::kPairedSlots)
+      if (!pair_belongs(s[p.high], s[p.low])) return "a low part (SDV 24-34) beyond its high part's float spacing";
+  auto v = [&](int i) { return value(s, i, paired); };
+  for (int i = 0; i <= slot::energy_unilateral; ++i)
+    if (!finite(v(i))) return "non-finite SDV 1-18";
+  if (!(v(slot::damage_n) >= 0 && v(slot::damage_n) <= 1)) return "d_n outside [0, 1]";
+  if (!(v(slot::damage_s) >= 0 && v(slot::damage_s) <= 1)) return "d_s outside [0, 1]";
+  if (!(v(slot::work_I) >= 0)) return "w_I < 0";
+  if (!(v(slot::work_II) >= 0)) return "w_II < 0";
+  if (!(v(slot::work_III) >= 0)) return "w_III < 0";
+  if (!(v(slot::dissipation_damage) >= 0)) return "D_damage < 0";
+  if (!(s[slot::open] == 0 || s[slot::open] == 1)) return "open flag not 0 or 1";
+  if (!(s[slot::initialised] == 0 || s[slot::initialised] == 1)) return "initialised flag not 0 or 1";
+  if (s[slot::initialised] == 1 && !finite(double(s[slot::reference_penetration]))) return "non-finite reference";
+  return nullptr;
+}
+
+}  // namespace mj_fuzz
