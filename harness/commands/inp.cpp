@@ -1,6 +1,7 @@
 #include "commands/inp.hpp"
 
 #include "commands/run.hpp"
+#include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
@@ -8,14 +9,12 @@
 namespace mortar::harness {
 
 int inp_command(const InpArgs& a, std::ostream& out) {
+  if (inp_writes_job(a)) return inp_job_command(a, out);
+  if (a.params.empty()) throw InputError("inp: --params FILE is needed (or --scene FILE)");
   check_stol(a.stol);
   const ParameterSet params = read_parameter_file(a.params);
-  Controls c;
-  if (!a.scheme.empty()) c.scheme = scheme_names().at(a.scheme);
-  c.stol = a.stol;
-  const auto props = to_props(params.values, c);
-  // Controls only when asked for: absent props, and zero ones, mean the
-  // routine's defaults.
+  const Scheme scheme = a.scheme.empty() ? Scheme::modified_euler : scheme_names().at(a.scheme);
+  // Controls only when asked for.
   const bool controls = !a.scheme.empty() || a.stol != 0;
   InpOptions o;
   o.name = a.name;
@@ -24,8 +23,7 @@ int inp_command(const InpArgs& a, std::ostream& out) {
   // (docs/model.md 3), and either routine records the integration flags in
   // SDV 35 with DEPVAR >= 35 (docs/model.md 9).
   o.depvar = kFlaggedStateCount;
-  o.props.assign(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
-  if (controls && a.scheme.empty()) o.props[kParameterCount] = 0.0;
+  o.props = deck_props(params.values, controls, !a.scheme.empty(), scheme, a.stol);
   write_surface_interaction(out, o);
   return 0;
 }

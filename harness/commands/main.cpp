@@ -78,8 +78,13 @@ int main(int argc, char** argv) {
   val_cmd->add_flag("--quiet,-q", val.quiet, "No progress on stderr");
 
   InpArgs inp;
-  CLI::App* inp_cmd = app.add_subcommand("inp", "Print the *SURFACE INTERACTION block for a parameter file");
-  inp_cmd->add_option("--params", inp.params, "Parameter file (TOML)")->required();
+  CLI::App* inp_cmd = app.add_subcommand(
+      "inp", "Print the *SURFACE INTERACTION block for a parameter file, or a complete Abaqus job (--scene, --two-blocks)");
+  inp_cmd->add_option("--params", inp.params, "Parameter file (TOML)");
+  inp_cmd->add_option("--scene", inp.scene, "Scene file (TOML): its wall as a complete Abaqus/Explicit job");
+  inp_cmd->add_option("--two-blocks", inp.two_blocks,
+                      "The two-block job for this solver (with --params): explicit (VUINTERACTION), standard (UINTER)")
+      ->check(CLI::IsMember({"explicit", "standard"}));
   inp_cmd->add_option("--scheme", inp.scheme, "Also write props(15) (and props(16))")
       ->check(CLI::IsMember(scheme_names));
   inp_cmd->add_option("--stol", inp.stol, "Also write props(16) = STOL (and props(15))");

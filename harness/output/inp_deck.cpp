@@ -28,13 +28,33 @@ std::string prop_name(size_t i) {
 }
 }  // namespace
 
+std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol) {
+  Controls c;
+  c.scheme = scheme;
+  c.stol = stol;
+  const auto props = to_props(p, c);
+  std::vector<double> out(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
+  if (controls && !scheme_given) out[kParameterCount] = 0.0;
+  return out;
+}
+
 void write_surface_interaction(std::ostream& out, const InpOptions& o) {
-  out << "** Mortar-joint law (coupled damage-plasticity), Abaqus/Explicit general contact.\n"
-      << "** Assign with *CONTACT PROPERTY ASSIGNMENT. Run without user=: usub_lib_dir in abaqus_v6.env\n"
-      << "** names the folder of libexplicitU.so / libexplicitU-D.so (Windows: explicitU.dll,\n"
-      << "** explicitU-D.dll); docs/abaqus.md.\n"
-      << "*SURFACE INTERACTION, NAME=" << o.name << ", USER=INTERACTION, PROPERTIES=" << o.props.size()
-      << ", DEPVAR=" << o.depvar << "\n";
+  if (o.standard) {
+    // The first data line of a USER interaction in Abaqus/Standard is the
+    // out-of-plane thickness or node area: blank for element-based 3D surfaces.
+    out << "** Mortar-joint law (coupled damage-plasticity), Abaqus/Standard contact pairs (UINTER).\n"
+        << "** Use on *CONTACT PAIR, INTERACTION=" << o.name << ". Run without user=: usub_lib_dir in\n"
+        << "** abaqus_v6.env names the folder of libstandardU.so (Windows: standardU.dll); docs/abaqus.md.\n"
+        << "*SURFACE INTERACTION, NAME=" << o.name << ", USER, PROPERTIES=" << o.props.size()
+        << ", DEPVAR=" << o.depvar << ", UNSYMM\n\n";
+  } else {
+    out << "** Mortar-joint law (coupled damage-plasticity), Abaqus/Explicit general contact.\n"
+        << "** Assign with *CONTACT PROPERTY ASSIGNMENT. Run without user=: usub_lib_dir in abaqus_v6.env\n"
+        << "** names the folder of libexplicitU.so / libexplicitU-D.so (Windows: explicitU.dll,\n"
+        << "** explicitU-D.dll); docs/abaqus.md.\n"
+        << "*SURFACE INTERACTION, NAME=" << o.name << ", USER=INTERACTION, PROPERTIES=" << o.props.size()
+        << ", DEPVAR=" << o.depvar << "\n";
+  }
   for (size_t first = 0; first < o.props.size(); first += 8) {
     const size_t last = std::min(first + 8, o.props.size());
     out << "** props(" << first + 1 << ".." << last << "):";

@@ -1,11 +1,16 @@
-// The Abaqus input-deck block that makes the routine available to general
-// contact: *SURFACE INTERACTION with USER=INTERACTION, PROPERTIES, DEPVAR and
-// the props on data lines (eight per line).
+// The Abaqus input-deck block that makes the routine available: for
+// Abaqus/Explicit general contact *SURFACE INTERACTION with USER=INTERACTION
+// (VUINTERACTION), for Abaqus/Standard contact pairs with USER and UNSYMM
+// (UINTER, whose first data line is the blank area/thickness line); then
+// PROPERTIES, DEPVAR and the props on data lines (eight per line). Every deck
+// the harness writes (inp, inp --scene, inp --two-blocks) goes through here.
 #pragma once
 
 #include <iosfwd>
 #include <string>
 #include <vector>
+
+#include "mortar/parameters.hpp"
 
 namespace mortar::harness {
 
@@ -13,9 +18,14 @@ struct InpOptions {
   std::string name = "MORTAR";  // the interaction's NAME
   std::vector<double> props;    // props(1..nProps)
   int depvar = 0;               // DEPVAR
+  bool standard = false;        // UINTER (Abaqus/Standard) instead of VUINTERACTION
 };
 
 void write_surface_interaction(std::ostream& out, const InpOptions& options);
+
+// props(1..14), and props(15..16) (scheme, STOL; 0 = the routine's default)
+// when `controls`: absent props, and zero ones, mean the routine's defaults.
+std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol);
 
 // Shortest decimal text that reads back as exactly x.
 std::string exact_decimal(double x);

@@ -1,0 +1,195 @@
+#include "output/wall_deck.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <ostream>
+#include <set>
+#include <string>
+
+#include "mortar/state_layout.hpp"
+#include "output/inp_deck.hpp"
+#include "output/inp_mesh.hpp"
+
+namespace mortar::harness {
+
+namespace {
+
+// The joint roles, each its own interaction and pair of surfaces: A the
+// lower/left bodies' faces, B the upper/right ones'.
+enum Role { kBed, kHead, kBase, kTop, kRoles };
+const char* const kRoleNames[kRoles] = {"BED", "HEAD", "BASE", "TOP"};
+
+Role role_of(const WallModel& m, const ContactPoint& p) {
+  if (!p.bed) return kHead;
+  if (p.a == m.base()) return kBase;
+  if (p.b == m.beam()) return kTop;
+  return kBed;
+}
+
+std::string body_name(const WallModel& m, int b) {
+  if (b == m.base()) return "BASE";
+  if (b == m.beam()) return "BEAM";
+  return "UNIT-" + std::to_string(b);
+}
+
+std::string num(double x) { return exact_decimal(x); }
+
+// *AMPLITUDE, DEFINITION=SMOOTH STEP through (time, value) corners: between
+// two corners a step with zero velocity and acceleration at both ends (the
+// scene's half cosines have the same corners and zero end velocities).
+void write_amplitude(std::ostream& out, const std::string& name, const std::vector<std::pair<double, double>>& pts) {
+  out << "*AMPLITUDE, NAME=" << name << ", DEFINITION=SMOOTH STEP\n";
+  for (size_t i = 0; i < pts.size(); ++i)
+    out << num(pts[i].first) << ", " << num(pts[i].second) << (i + 1 == pts.size() || i % 4 == 3 ? "\n" : ", ");
+}
+
+class WallDeck {
+ public:
+  WallDeck(const SceneSpec& s, const WallModel& m) : s_(s), m_(m) {}
+
+  void write(std::ostream& out, double dt) {
+    mesh_bodies();
+    out << "*HEADING\n"
+        << "Wall of " << m_.blocks() << " rigid units from the scene " << s_.file << " (masonry-joint inp --scene)\n"
+        << "** Units N, mm, s, t (tonne), MPa. In-plane wall (x along the wall, y up) extruded over the unit\n"
+        << "** depth in z; every body is a rigid body, its reference node at the scene's centroid.\n";
+    mesh_.write_nodes(out);
+    mesh_.write_elements(out, "C3D8R");
+    write_sets(out);
+    write_materials(out);
+    write_damping(out);
+    write_interactions(out);
+    write_step(out, dt);
+  }
+
+ private:
+  void mesh_bodies() {
+    const WallGeometry& g = s_.wall;
+    const int per = std::max(1, g.points_per_face - 1);
+    const double hx = (g.unit_length + g.joint) / per, hy = (g.unit_height + g.joint) / per;
+    for (int b = 0; b < static_cast<int>(m_.bodies.size()); ++b) {
+      const std::vector<double>& c = m_.bodies[static_cast<size_t>(b)].corners;
+      double x0 = c[0], y0 = c[1], x1 = c[4], y1 = c[5];
+      if (y1 - y0 <= 0) y1 = y0 + g.unit_height + g.joint;  // a beam of no height: one course high
+      const int nx = std::max(1, static_cast<int>(std::lround((x1 - x0) / hx)));
+      const int ny = std::max(1, static_cast<int>(std::lround((y1 - y0) / hy)));
+      boxes_.push_back(mesh_.add_box(body_name(m_, b), {x0, y0, 0.0}, {x1, y1, g.unit_depth}, {nx, ny, 1}));
+      volume_.push_back((x1 - x0) * (y1 - y0) * g.unit_depth);
+    }
+    for (const Body& b : m_.bodies) refs_.push_back(mesh_.add_node(b.cx, b.cy, 0.5 * g.unit_depth));
+  }
+
+  void write_sets(std::ostream& out) {
+    std::vector<int> moving, free_refs;
+    for (int b = 1; b < static_cast<int>(m_.bodies.size()); ++b) {
+      const MeshBox& box = mesh_.box(boxes_[static_cast<size_t>(b)]);
+      for (int e = 0; e < box.n[0] * box.n[1] * box.n[2]; ++e) moving.push_back(box.first_element + e);
+      free_refs.push_back(refs_[static_cast<size_t>(b)]);
+    }
+    write_set(out, "*ELSET, ELSET=MOVING", moving);
+    write_set(out, "*NSET, NSET=FREE-REFS", free_refs);
+    write_set(out, "*NSET, NSET=BASE-REF", {refs_.front()});
+    write_set(out, "*NSET, NSET=BEAM-REF", {refs_.back()});
+    for (int b = 0; b < static_cast<int>(m_.bodies.size()); ++b)
+      out << "*RIGID BODY, REF NODE=" << refs_[static_cast<size_t>(b)] << ", ELSET=" << body_name(m_, b) << "\n";
+  }
+
+  void write_materials(std::ostream& out) const {
+    // Rigid bodies take their mass and rotary inertia from their elements:
+    // the units' density is the scene's (enlarged units), the beam's spreads
+    // the scene's beam mass (tied course included) over its box.
+    const double beam_density = m_.bodies.back().mass / volume_.back();
+    for (int b = 0; b < static_cast<int>(m_.bodies.size()); ++b)
+      out << "*SOLID SECTION, ELSET=" << body_name(m_, b) << ", MATERIAL=" << (b == m_.beam() ? "BEAM" : "UNIT")
+          << "\n";
+    for (const auto& [name, density] : {std::pair<const char*, double>{"UNIT", s_.wall.density}, {"BEAM", beam_density}})
+      out << "*MATERIAL, NAME=" << name << "\n*DENSITY\n" << num(density) << ",\n*ELASTIC\n30000., 0.2\n";
+  }
+
+  // The scene's C = alpha·M (masses and inertias times the mass scaling) as
+  // a dashpot to ground on every free degree of freedom of each body.
+  void write_damping(std::ostream& out) const {
+    const double alpha = s_.solver.mass_damping, f = s_.solver.mass_scaling;
+    if (alpha <= 0) return;
+    int element = mesh_.elements();
+    for (int b = 1; b < static_cast<int>(m_.bodies.size()); ++b) {
+      const Body& body = m_.bodies[static_cast<size_t>(b)];
+      for (int dof : {1, 2, 6}) {
+        if (b == m_.beam() && (dof == 1 || (dof == 6 && s_.wall.beam_rotation == BeamRotation::fixed))) continue;
+        const std::string set = "DAMP-" + body_name(m_, b) + "-" + std::to_string(dof);
+        out << "*ELEMENT, TYPE=DASHPOT1, ELSET=" << set << "\n" << ++element << ", " << refs_[static_cast<size_t>(b)]
+            << "\n*DASHPOT, ELSET=" << set << "\n" << dof << "\n"
+            << num(alpha * f * (dof == 6 ? body.inertia : body.mass)) << "\n";
+      }
+    }
+  }
+
+  void write_interactions(std::ostream& out) {
+    std::set<std::pair<int, int>> seen[kRoles][2];  // (body, side) already on a surface
+    std::vector<ElementFace> faces[kRoles][2];
+    for (const ContactPoint& p : m_.points) {
+      const Role r = role_of(m_, p);
+      const int body[2] = {p.a, p.b};
+      const BoxSide sides[2] = {p.bed ? BoxSide::ymax : BoxSide::xmax, p.bed ? BoxSide::ymin : BoxSide::xmin};
+      for (int k = 0; k < 2; ++k)
+        if (seen[r][k].insert({body[k], static_cast<int>(sides[k])}).second)
+          for (const ElementFace& f : mesh_.side(boxes_[static_cast<size_t>(body[k])], sides[k]))
+            faces[r][k].push_back(f);
+    }
+    InpOptions o;
+    o.depvar = kFlaggedStateCount;
+    const bool controls = s_.scheme != Scheme::modified_euler || s_.stol != 0;
+    o.props = deck_props(s_.joint.values, controls, s_.scheme != Scheme::modified_euler, s_.scheme, s_.stol);
+    for (int r = 0; r < kRoles; ++r) {
+      if (faces[r][0].empty()) continue;
+      roles_.push_back(r);
+      write_element_surface(out, std::string(kRoleNames[r]) + "-A", faces[r][0]);
+      write_element_surface(out, std::string(kRoleNames[r]) + "-B", faces[r][1]);
+      o.name = std::string("MORTAR-") + kRoleNames[r];
+      out << "** " << kRoleNames[r] << " joints: the joint law of " << s_.joint.file << "\n";
+      write_surface_interaction(out, o);
+    }
+  }
+
+  void write_step(std::ostream& out, double dt) const {
+    const std::vector<double> ends = s_.stage_ends();
+    const double T = ends.back();
+    write_amplitude(out, "SELF-WEIGHT", {{0, 0}, {ends[0], 1}});
+    write_amplitude(out, "PRECOMPRESSION", {{0, 0}, {ends[0], 0}, {ends[1], 1}});
+    std::vector<std::pair<double, double>> legs = {{0, 0}, {ends[2], 0}};
+    for (size_t k = 0; k < s_.loading.displacement.size(); ++k) legs.push_back({ends[3 + k], s_.loading.displacement[k]});
+    write_amplitude(out, "TOP-DISPLACEMENT", legs);
+    out << "*STEP, NAME=WALL\n*DYNAMIC, EXPLICIT, DIRECT USER CONTROL\n" << num(dt) << ", " << num(T) << "\n";
+    if (s_.solver.mass_scaling != 1) out << "*FIXED MASS SCALING, FACTOR=" << num(s_.solver.mass_scaling) << "\n";
+    out << "*CONTACT\n*CONTACT INCLUSIONS\n";
+    for (int r : roles_) out << kRoleNames[r] << "-A, " << kRoleNames[r] << "-B\n";
+    out << "*CONTACT PROPERTY ASSIGNMENT\n";
+    for (int r : roles_) out << kRoleNames[r] << "-A, " << kRoleNames[r] << "-B, MORTAR-" << kRoleNames[r] << "\n";
+    // Supports: the base fixed; every body in the plane; the beam's rotation
+    // as the scene says; its ux through the displacement history.
+    out << "*BOUNDARY\nBASE-REF, ENCASTRE\nFREE-REFS, 3, 5\n";
+    if (s_.wall.beam_rotation == BeamRotation::fixed) out << "BEAM-REF, 6, 6\n";
+    out << "*BOUNDARY, AMPLITUDE=TOP-DISPLACEMENT\nBEAM-REF, 1, 1, 1.\n"
+        << "*DLOAD, AMPLITUDE=SELF-WEIGHT\nMOVING, GRAV, " << num(s_.loading.gravity) << ", 0., -1., 0.\n"
+        << "*CLOAD, AMPLITUDE=PRECOMPRESSION\nBEAM-REF, 2, "
+        << num(-s_.loading.precompression * m_.length * s_.wall.unit_depth) << "\n";
+    out << "*OUTPUT, FIELD, NUMBER INTERVAL=100\n*NODE OUTPUT\nU, RF\n*CONTACT OUTPUT\nCSTRESS\n"
+        << "*OUTPUT, HISTORY, TIME INTERVAL=" << num(T / 2000) << "\n"
+        << "*NODE OUTPUT, NSET=BEAM-REF\nU1, U2, UR3, RF1, RF2\n*NODE OUTPUT, NSET=BASE-REF\nRF1, RF2, RM3\n"
+        << "*ENERGY OUTPUT\nALLSE, ALLPD, ALLKE, ALLWK, ALLVD, ETOTAL\n*END STEP\n";
+  }
+
+  const SceneSpec& s_;
+  const WallModel& m_;
+  InpMesh mesh_;
+  std::vector<int> boxes_, refs_, roles_;
+  std::vector<double> volume_;
+};
+
+}  // namespace
+
+void write_wall_deck(std::ostream& out, const SceneSpec& scene, const WallModel& model, double time_increment) {
+  WallDeck(scene, model).write(out, time_increment);
+}
+
+}  // namespace mortar::harness

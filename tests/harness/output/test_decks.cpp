@@ -1,0 +1,255 @@
+// The Abaqus jobs of `inp --scene` and `inp --two-blocks`, read back with a
+// reader of the keyword rules (inp_reader.hpp) and compared with what they
+// came from: the units' corners with the geometry computed here from the
+// scene file's numbers, the props with the parameter file, the amplitudes'
+// corners with the scene's stage durations, the loads and displacements
+// with the loading programs of examples/two_blocks/.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "input/parameter_file.hpp"
+#include "input/protocol.hpp"
+#include "input/scene_file.hpp"
+#include "output/inp_deck.hpp"
+#include "output/inp_reader.hpp"
+#include "output/two_block_deck.hpp"
+#include "output/wall_deck.hpp"
+#include "solvers/block_solver.hpp"
+
+using namespace mortar;
+using namespace mortar::harness;
+using namespace mortar::harness::test;
+
+namespace {
+
+const std::string kData = MJ_TEST_DATA_DIR;
+const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples";
+
+std::vector<double> table_order(const Parameters& p) {
+  return {p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs};
+}
+
+std::string wall_deck_text(const SceneSpec& s) {
+  const WallModel m = build_wall(s.wall);
+  std::ostringstream out;
+  write_wall_deck(out, s, m, BlockSolver(s, m, BlockSolverOptions{}).time_increment());
+  return out.str();
+}
+
+// The units' rectangles [x0, y0, x1, y1] from the scene's numbers: blocks
+// are units plus a joint; running bond starts every other course with a
+// half block; tied courses belong to the base or the beam.
+std::vector<std::array<double, 4>> expected_units(const SceneSpec& s) {
+  const WallGeometry& g = s.wall;
+  const double bl = g.unit_length + g.joint, bh = g.unit_height + g.joint, L = g.units_per_course * bl;
+  std::vector<std::array<double, 4>> out;
+  for (int c = 0; c < g.courses; ++c) {
+    if ((c == 0 && g.tie_bottom_course) || (c == g.courses - 1 && g.tie_top_course)) continue;
+    double x = (g.bond == Bond::running && c % 2 == 1) ? 0.5 * bl : 0.0;
+    if (x > 0) out.push_back({0, c * bh, x, (c + 1) * bh});
+    for (; x < L - 1e-9; x += bl) out.push_back({x, c * bh, std::min(x + bl, L), (c + 1) * bh});
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+const InpCard& amplitude(const InpModel& m, const std::string& name) {
+  for (const InpCard* c : m.all("AMPLITUDE"))
+    if (c->at("NAME") == name) return *c;
+  FAIL("no amplitude " << name);
+  throw;
+}
+
+std::vector<double> numbers(const InpCard& c) {
+  std::vector<double> out;
+  for (const auto& d : c.data)
+    for (const auto& f : d) out.push_back(inp_number(f));
+  return out;
+}
+
+// The data line of a *BOUNDARY or *CLOAD (in `step`) on `node_set` and `dof`.
+std::vector<std::string> load_line(const InpModel& m, const std::string& keyword, const std::string& node_set, int dof,
+                                   int step = -1) {
+  std::vector<std::string> found;
+  for (const InpCard* c : m.all(keyword))
+    for (const auto& d : c->data)
+      if (d[0] == node_set && std::atoi(d[1].c_str()) == dof && (step < 0 || c->step == step)) {
+        found = d;
+        found.push_back(c->at("AMPLITUDE"));
+      }
+  return found;
+}
+
+}  // namespace
+
+TEST_CASE("inp --scene: units, rigid bodies, joints by role, props, loading", "[inputs][decks]") {
+  const SceneSpec s = read_scene_file(kData + "/wall_small.toml");
+  const InpModel m(wall_deck_text(s));
+  const WallGeometry& g = s.wall;
+  const double bl = g.unit_length + g.joint, bh = g.unit_height + g.joint, L = g.units_per_course * bl;
+
+  // Units: every UNIT-k element set spans one expected rectangle, over the depth.
+  const auto expected = expected_units(s);
+  std::vector<std::array<double, 4>> found;
+  for (const auto& [name, elements] : m.elsets)
+    if (name.rfind("UNIT-", 0) == 0) {
+      const auto b = m.box_of(name);
+      CHECK(b[0][2] == 0.0);
+      CHECK(b[1][2] == Approx(g.unit_depth));
+      found.push_back({b[0][0], b[0][1], b[1][0], b[1][1]});
+    }
+  std::sort(found.begin(), found.end());
+  REQUIRE(found.size() == expected.size());
+  for (size_t i = 0; i < found.size(); ++i)
+    for (int k = 0; k < 4; ++k) CHECK(found[i][k] == Approx(expected[i][k]).margin(1e-9));
+
+  // Each unit a rigid body whose reference node is its centre.
+  int rigid_units = 0;
+  for (const InpCard* c : m.all("RIGID BODY")) {
+    const std::string set = c->at("ELSET");
+    if (set.rfind("UNIT-", 0) != 0) continue;
+    ++rigid_units;
+    const auto b = m.box_of(set);
+    const auto& ref = m.nodes.at(std::atoi(c->at("REF NODE").c_str()));
+    CHECK(ref[0] == Approx(0.5 * (b[0][0] + b[1][0])));
+    CHECK(ref[1] == Approx(0.5 * (b[0][1] + b[1][1])));
+  }
+  CHECK(rigid_units == static_cast<int>(expected.size()));
+
+  // Joints by role: every face on its plane (bed joints at course heights,
+  // the base at 0, the top at the wall's height, head joints inside).
+  for (const auto& [name, faces] : m.surfaces) {
+    CAPTURE(name);
+    for (const auto& [e, f] : faces) {
+      const auto pts = m.face_nodes(e, f);
+      const bool bed = name.rfind("HEAD", 0) != 0;
+      for (const auto& p : pts) {
+        CHECK(p[bed ? 1 : 0] == Approx(pts[0][bed ? 1 : 0]));
+        if (!bed) continue;
+        const double course = p[1] / bh;
+        CHECK(course == Approx(std::round(course)).margin(1e-9));
+        if (name.rfind("BASE", 0) == 0) CHECK(p[1] == Approx(0).margin(1e-9));
+        if (name.rfind("TOP", 0) == 0) CHECK(p[1] == Approx(g.courses * bh));
+        if (name.rfind("BED", 0) == 0) CHECK((p[1] > 0.5 * bh && p[1] < (g.courses - 0.5) * bh));
+      }
+      if (!bed) CHECK((pts[0][0] > 0 && pts[0][0] < L));
+    }
+  }
+  for (const char* role : {"BED-A", "BED-B", "HEAD-A", "HEAD-B", "BASE-A", "BASE-B", "TOP-A", "TOP-B"})
+    CHECK(m.surfaces.count(role) == 1);
+
+  // Props: the parameter file's values, as VUINTERACTION reads them.
+  const std::vector<double> params = table_order(read_parameter_file(kData + "/vdp_sn0.5.toml").values);
+  const auto interactions = m.all("SURFACE INTERACTION");
+  CHECK(interactions.size() == 4);
+  for (const InpCard* c : interactions) {
+    CHECK(c->at("USER") == "INTERACTION");
+    CHECK(c->at("DEPVAR") == "35");
+    CHECK(m.props(*c) == params);
+  }
+
+  // Amplitudes: corners at the ends of the scene's stages.
+  const double t_sw = 0.005, t_pc = 0.005 + 0.005, t_hold = t_pc + 0.002, t_end = t_hold + 0.6 / 40.0;
+  CHECK(numbers(amplitude(m, "SELF-WEIGHT")) == std::vector<double>{0, 0, t_sw, 1});
+  const auto pre = numbers(amplitude(m, "PRECOMPRESSION"));
+  CHECK(pre.size() == 6);
+  CHECK(pre[4] == Approx(t_pc));
+  CHECK(pre[5] == 1.0);
+  const auto top = numbers(amplitude(m, "TOP-DISPLACEMENT"));
+  REQUIRE(top.size() == 6);
+  CHECK(top[2] == Approx(t_hold));
+  CHECK(top[4] == Approx(t_end));
+  CHECK(top[5] == Approx(0.6));
+  // Loads and supports.
+  CHECK(inp_number(load_line(m, "CLOAD", "BEAM-REF", 2)[2]) == Approx(-0.3 * L * g.unit_depth));
+  const auto push = load_line(m, "BOUNDARY", "BEAM-REF", 1);
+  REQUIRE(push.size() == 5);
+  CHECK(inp_number(push[3]) == 1.0);
+  CHECK(push[4] == "TOP-DISPLACEMENT");
+  CHECK(load_line(m, "BOUNDARY", "BEAM-REF", 6).size() == 4);  // rotation fixed
+  const auto step = m.all("DYNAMIC");
+  REQUIRE(step.size() == 1);
+  CHECK(step[0]->has("DIRECT USER CONTROL"));
+  CHECK(inp_number(step[0]->data[0][1]) == Approx(t_end));
+}
+
+TEST_CASE("inp --scene: the J4D wall's tied courses join the base and the beam", "[inputs][decks]") {
+  const SceneSpec s = read_scene_file(kExamples + "/tu_eindhoven_wall/wall_j4d.toml");
+  const InpModel m(wall_deck_text(s));
+  int units = 0;
+  for (const auto& [name, e] : m.elsets) units += name.rfind("UNIT-", 0) == 0;
+  CHECK(units == static_cast<int>(expected_units(s).size()));
+  const double bh = s.wall.unit_height + s.wall.joint;
+  CHECK(m.box_of("BASE")[1][1] == Approx(bh));                       // the bottom course in the base
+  CHECK(m.box_of("BEAM")[0][1] == Approx((s.wall.courses - 1) * bh));  // the top course in the beam
+}
+
+TEST_CASE("inp --two-blocks: geometry, props and loading match the loading programs", "[inputs][decks]") {
+  const Parameters p = read_parameter_file(std::string(MJ_CALIBRATION_DATA_DIR) + "/almeida_tension/params_M15.toml").values;
+  const Protocol shear = read_protocol_file(kExamples + "/two_blocks/shear.toml");
+  const Protocol tension = read_protocol_file(kExamples + "/two_blocks/tension.toml");
+  for (const bool standard : {false, true}) {
+    CAPTURE(standard);
+    std::ostringstream out;
+    write_two_block_deck(out, deck_props(p, false, false, Scheme::modified_euler, 0),
+                         standard ? DeckSolver::standard_contact_pair : DeckSolver::explicit_general_contact);
+    const InpModel m(out.str());
+    // The joint faces: on y = 0, 100 x 100 mm; the lower block's 25 nodes on it.
+    double area = 0;
+    for (const char* surface : {"SHEAR-UPPER-BOTTOM", "SHEAR-LOWER-TOP"}) {
+      double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+      for (const auto& [e, f] : m.surfaces.at(surface))
+        for (const auto& n : m.face_nodes(e, f)) {
+          CHECK(n[1] == 0.0);
+          lo[0] = std::min(lo[0], n[0]), hi[0] = std::max(hi[0], n[0]), lo[1] = std::min(lo[1], n[2]), hi[1] = std::max(hi[1], n[2]);
+        }
+      area = (hi[0] - lo[0]) * (hi[1] - lo[1]);
+      CHECK(area == 1e4);
+    }
+    CHECK(m.surfaces.at("TENSION-LOWER-TOP").size() == 16);
+    // Props and the interaction's form.
+    const auto ia = m.all("SURFACE INTERACTION");
+    REQUIRE(ia.size() == 1);
+    CHECK(m.props(*ia[0]) == table_order(p));
+    CHECK(ia[0]->at("USER") == (standard ? "" : "INTERACTION"));
+    CHECK(ia[0]->at("DEPVAR") == (standard ? "23" : "35"));
+    CHECK(ia[0]->has("UNSYMM") == standard);
+    if (standard) CHECK(ia[0]->data[0] == std::vector<std::string>{""});
+    // Step 1: the pressure of the SHEAR program on the joint's area.
+    CHECK(inp_number(load_line(m, "CLOAD", "SHEAR-REF", 2, 1)[2]) == Approx(shear.steps[0].component[0].target * area));
+    // Step 2: the programs' slip and opening.
+    CHECK(inp_number(load_line(m, "BOUNDARY", "SHEAR-REF", 1, 2)[3]) == shear.steps[1].component[1].target);
+    CHECK(inp_number(load_line(m, "BOUNDARY", "TENSION-REF", 2, 2)[3]) == tension.steps[1].component[0].target);
+    if (standard) {
+      const auto st = m.all("STATIC");
+      REQUIRE(st.size() == 2);
+      for (int k = 0; k < 2; ++k) {
+        CHECK(inp_number(st[k]->data[0][0]) * shear.steps[k].increments == Approx(1.0));
+        CHECK(inp_number(st[k]->data[0][3]) * tension.steps[k].increments == Approx(1.0));
+      }
+      CHECK(m.all("CONTACT PAIR").size() == 1);
+    } else {
+      CHECK(m.all("CONTACT PROPERTY ASSIGNMENT").size() == 1);
+    }
+  }
+}
+
+TEST_CASE("The shipped two-block decks are what inp --two-blocks writes today", "[inputs][decks]") {
+  const Parameters p = read_parameter_file(std::string(MJ_CALIBRATION_DATA_DIR) + "/almeida_tension/params_M15.toml").values;
+  for (const bool standard : {false, true}) {
+    const std::string file = kExamples + "/two_blocks/two_blocks_" + (standard ? "standard" : "explicit") + ".inp";
+    CAPTURE(file);
+    std::ifstream in(file);
+    REQUIRE(in);
+    std::stringstream shipped;
+    shipped << in.rdbuf();
+    std::ostringstream fresh;
+    write_two_block_deck(fresh, deck_props(p, false, false, Scheme::modified_euler, 0),
+                         standard ? DeckSolver::standard_contact_pair : DeckSolver::explicit_general_contact);
+    CHECK(shipped.str() == fresh.str());
+  }
+}
