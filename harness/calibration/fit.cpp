@@ -278,26 +278,36 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
   std::vector<FitUnknown> all = make_unknowns(curves, start, o.per_sigma_n);
   Eigen::VectorXd v0(long(all.size()));
   for (size_t k = 0; k < all.size(); ++k) v0[long(k)] = std::clamp(parameter_at(base, all[k].index), all[k].lo, all[k].hi);
+  // A linear unknown starts 2 % of its range inside its lower bound (psir
+  // from 0.9 deg), where the transform and the scaled Jacobian see it; held,
+  // it keeps its placeholder (psir 0).
+  Eigen::VectorXd vs = v0;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (all[k].linear) vs[long(k)] = std::max(v0[long(k)], all[k].lo + 0.02 * (all[k].hi - all[k].lo));
   // What the data cannot separate, from the Jacobian at the start.
   std::vector<int> prefer;
   const std::vector<std::string> names = labels(all, prefer);
-  const Eigen::MatrixXd J0 = residuals.jacobian(all, v0, residuals(all, v0));
+  const Eigen::MatrixXd J0 = residuals.jacobian(all, vs, residuals(all, vs));
   std::vector<bool> held(all.size(), false);
-  for (const Unidentifiable& u : unidentifiable(J0, v0, names, prefer)) {
+  for (const Unidentifiable& u : unidentifiable(J0, vs, names, prefer)) {
     held[size_t(u.column)] = true;
     fit.held.push_back(names[size_t(u.column)] + ": held; the data determine only a combination (" + u.direction + ")");
   }
-  // A linear unknown starts 2 % of its range inside its lower bound (psir
-  // from 0.9 deg), where the transform can move it; held, it keeps 0.
   Eigen::VectorXd v(long(all.size()));
   for (size_t k = 0, j = 0; k < all.size(); ++k)
-    if (!held[k])
-      fit.unknowns.push_back(all[k]),
-          v[long(j++)] = all[k].linear ? std::max(v0[long(k)], all[k].lo + 0.02 * (all[k].hi - all[k].lo)) : v0[long(k)];
+    if (!held[k]) fit.unknowns.push_back(all[k]), v[long(j++)] = vs[long(k)];
   v.conservativeResize(long(fit.unknowns.size()));
-  if (fit.unknowns.empty() || residuals.size() <= v.size())
-    throw InputError("the data leave nothing to fit: " + std::to_string(residuals.size()) + " residuals for " +
-                     std::to_string(v.size()) + " unknowns");
+  // Nothing left at the start: no unknown moves the misfit, which happens when
+  // the rules' values break a rule of the law or no run completes (curves
+  // inconsistent with each other, e.g. one specimen at half strength).
+  if (fit.unknowns.empty() || residuals.size() <= v.size()) {
+    const ValidationError e = validate(base);
+    throw InputError("the data leave nothing to fit (" + std::to_string(residuals.size()) + " residuals, " +
+                     std::to_string(v.size()) + " unknowns the misfit depends on): " +
+                     (e.ok() ? std::string("no unknown moves the misfit at the direct rules' values")
+                             : "the direct rules' values break a rule of the law (" + e.message() + ")") +
+                     "; the curves disagree with each other (a specimen unlike the others, a wrong sigma_n?)");
+  }
   // First the softening and wear alone, from the rules' starting values,
   // then everything with the strengths: a joint start from rough softening
   // values was seen to settle in a worse minimum.
