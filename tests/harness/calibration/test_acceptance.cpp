@@ -37,7 +37,7 @@ std::string reasons(const Verdict& v) {
 
 TEST_CASE("a calibrated set is accepted only when the fit converged near the noise, off its bounds, finite",
           "[calibration]") {
-  const Parameters p = testing::van_der_pluijm(-0.5);
+  const Parameters p = mortar::testing::van_der_pluijm(-0.5);
   CHECK(judge(good_fit(), {{"", p}}).accepted());
   struct Case {
     const char* message;
@@ -66,9 +66,9 @@ TEST_CASE("a calibrated set is accepted only when the fit converged near the noi
 }
 
 TEST_CASE("a parameter file never holds a non-finite value", "[calibration]") {
-  Parameters p = testing::van_der_pluijm(-0.5);
+  Parameters p = mortar::testing::van_der_pluijm(-0.5);
   p.c0 = NAN, p.psi0 = -NAN;
-  const std::string path = (testing::fresh_directory("nonfinite") / "params.toml").string();
+  const std::string path = (mortar::harness::testing::fresh_directory("nonfinite") / "params.toml").string();
   write_parameter_file(path, p, {"test"});
   std::stringstream text;
   text << std::ifstream(path).rdbuf();
