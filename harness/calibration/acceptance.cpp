@@ -1,5 +1,7 @@
 #include "calibration/acceptance.hpp"
 
+#include "calibration/curve_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,11 +10,7 @@ namespace mortar::harness {
 
 namespace {
 
-std::string g(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
+std::string g(double x) { return number_text(x, 3); }
 
 }  // namespace
 

@@ -9,13 +9,15 @@
 
 namespace mortar::harness {
 
-namespace {
-
-std::string value(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", x);
+std::string number_text(double x, int digits) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
 }
+
+namespace {
+
+std::string value(double x) { return number_text(x); }
 
 void check_range(const TestCurve& c, const std::vector<double>& v, const char* what, const char* unit, double limit) {
   for (size_t i = 0; i < v.size(); ++i)

@@ -6,6 +6,8 @@
 // reported as such rather than read as a property of the joint.
 #pragma once
 
+#include <string>
+
 #include "calibration/test_curve.hpp"
 
 namespace mortar::harness {
@@ -14,6 +16,10 @@ namespace mortar::harness {
 // (a unit slip, a typo, a value of 1e30) fall outside.
 inline constexpr double kMaxTraction = 100;     // |tau|, |sigma|, |sigma_n| [MPa]: above the strongest brick's compressive strength
 inline constexpr double kMaxDisplacement = 100; // |slip|, |opening|, |uplift| [mm]: a block's size
+
+// x in %g with `digits` significant digits, for the messages here and in
+// acceptance.cpp.
+std::string number_text(double x, int digits = 6);
 
 // Throws InputError (file, row, value, rule) for the first breach.
 void check_curve_values(const TestCurve& c);
