@@ -209,6 +209,7 @@ void dilatancy_start(const std::vector<TestCurve>& curves, Calibration& cal) {
   }
   const double psi0 = std::clamp(std::atan(sum / n) / kDegree, 0.5, 60.0);
   cal["psi0"] = {psi0, Stage::fit, "starting value: the initial dilatancy (model.md 5)"};
+  cal["psir"] = {0, Stage::fit, "placeholder 0 (no residual dilatancy); fitted where the uplift shows it"};
 }
 
 }  // namespace
@@ -220,7 +221,8 @@ void fill_placeholders(bool tension, Calibration& cal) {
     cal["GIC"] = {cal["GIIC"].value / 10, Stage::not_determined,
                   "no tension curve: GIIC/10, the ratio of Table 1 (wI is 0 under compression)"};
   }
-  cal["psir"] = {0, Stage::not_determined, "Table 1's value: the tests do not reach a worn-out dilatancy"};
+  if (cal["psir"].stage == Stage::not_determined && cal["psir"].how.empty())
+    cal["psir"] = {0, Stage::not_determined, "no dilatancy measured: 0, Table 1's value"};
 }
 
 DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {

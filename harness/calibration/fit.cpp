@@ -30,6 +30,11 @@ Parameters parameters_for(const TestCurve& c, const Parameters& base, const std:
   return p;
 }
 
+bool on_bound(const FitUnknown& u, double v) {
+  if (u.linear) return v >= u.hi - 0.01 * (u.hi - u.lo);
+  return v <= 1.01 * u.lo || v >= u.hi / 1.01;
+}
+
 namespace {
 
 // Bounds [parameter unit]: wide enough for any mortar of Table 1's kind
@@ -61,6 +66,10 @@ std::vector<FitUnknown> make_unknowns(const std::vector<TestCurve>& curves, cons
       for (double s : levels) u.push_back(unknown(name, 1, 1e5, s));
   }
   if (dilatancy) u.push_back(unknown("psi0", 0.1, 60));
+  // psir on [0, 45] deg, linear: 0 (no residual dilatancy) is the law's own
+  // value, not a bound that stops the fit. Held at 0 at the solution where
+  // the data do not determine it.
+  if (dilatancy) u.push_back({parameter_index("psir"), NAN, 0, 45, true});
   u.push_back(unknown("bn", 0.01, 100));
   u.push_back(unknown("bs", 0.01, 100));
   return u;
@@ -95,6 +104,7 @@ class Residuals {
       }
       const double sy = scale(c.y), su = c.has_uplift() ? scale(c.uplift) : 1;
       double ey = 0, eu = 0;
+      const long first = at;
       for (size_t i = 0; i < c.x.size(); ++i) {
         const double d = m.failed ? 10 * sy : sim.y[i] - c.y[i];
         r[at++] = d / sy, ey += d * d;
@@ -102,6 +112,7 @@ class Residuals {
         const double e = m.failed ? 10 * su : sim.uplift[i] - c.uplift[i];
         r[at++] = e / su, eu += e * e;
       }
+      m.rms_scaled = std::sqrt(r.segment(first, at - first).squaredNorm() / double(at - first));
       m.rms_traction = std::sqrt(ey / c.x.size());
       if (c.has_uplift()) m.rms_uplift = std::sqrt(eu / c.x.size());
       if (misfit) misfit->push_back(m);
@@ -109,14 +120,15 @@ class Residuals {
     return r;
   }
 
-  // Forward differences, steps of 1e-3 of each value: far above the
-  // integration's own noise (STOL), small against the curvature.
+  // Forward differences, steps of 1e-3 of each value (of 1 for a linear
+  // unknown below 1, which may be 0): far above the integration's own noise
+  // (STOL), small against the curvature.
   Eigen::MatrixXd jacobian(const std::vector<FitUnknown>& unknowns, const Eigen::VectorXd& v,
                            const Eigen::VectorXd& r0) {
     Eigen::MatrixXd J(size_, v.size());
     for (long j = 0; j < v.size(); ++j) {
       Eigen::VectorXd w = v;
-      w[j] *= 1 + 1e-3;
+      w[j] += 1e-3 * (unknowns[size_t(j)].linear ? std::max(std::abs(v[j]), 1.0) : v[j]);
       J.col(j) = ((*this)(unknowns, w) - r0) / (w[j] - v[j]);
     }
     return J;
@@ -137,17 +149,24 @@ class Residuals {
 // The logistic-on-log-scale transform of fit.hpp, unknown by unknown.
 struct Transform {
   const std::vector<FitUnknown>& u;
-  double span(long k) const { return std::log(u[size_t(k)].hi / u[size_t(k)].lo); }
+  bool lin(long k) const { return u[size_t(k)].linear; }
+  double span(long k) const {
+    return lin(k) ? u[size_t(k)].hi - u[size_t(k)].lo : std::log(u[size_t(k)].hi / u[size_t(k)].lo);
+  }
   double sigmoid(double t) const { return 1 / (1 + std::exp(-t)); }
   Eigen::VectorXd value(const Eigen::VectorXd& t) const {
     Eigen::VectorXd v(t.size());
-    for (long k = 0; k < t.size(); ++k) v[k] = u[size_t(k)].lo * std::exp(span(k) * sigmoid(t[k]));
+    for (long k = 0; k < t.size(); ++k) {
+      const double f = span(k) * sigmoid(t[k]);
+      v[k] = lin(k) ? u[size_t(k)].lo + f : u[size_t(k)].lo * std::exp(f);
+    }
     return v;
   }
   Eigen::VectorXd unbounded(const Eigen::VectorXd& v) const {
     Eigen::VectorXd t(v.size());
     for (long k = 0; k < v.size(); ++k) {
-      const double f = std::clamp(std::log(v[k] / u[size_t(k)].lo) / span(k), 1e-6, 1 - 1e-6);
+      const double a = lin(k) ? v[k] - u[size_t(k)].lo : std::log(v[k] / u[size_t(k)].lo);
+      const double f = std::clamp(a / span(k), 1e-6, 1 - 1e-6);
       t[k] = std::log(f / (1 - f));
     }
     return t;
@@ -155,7 +174,8 @@ struct Transform {
   Eigen::VectorXd derivative(const Eigen::VectorXd& t) const {  // dv/dt
     const Eigen::VectorXd v = value(t);
     Eigen::VectorXd d(t.size());
-    for (long k = 0; k < t.size(); ++k) d[k] = v[k] * span(k) * sigmoid(t[k]) * (1 - sigmoid(t[k]));
+    for (long k = 0; k < t.size(); ++k)
+      d[k] = (lin(k) ? 1 : v[k]) * span(k) * sigmoid(t[k]) * (1 - sigmoid(t[k]));
     return d;
   }
 };
@@ -196,6 +216,7 @@ struct Outcome {
   Eigen::VectorXd value;
   int iterations = 0;
   std::string status;
+  bool converged = false;
 };
 
 Outcome least_squares(Residuals& residuals, const std::vector<FitUnknown>& unknowns, const Eigen::VectorXd& v,
@@ -211,7 +232,10 @@ Outcome least_squares(Residuals& residuals, const std::vector<FitUnknown>& unkno
     status = lm.minimizeOneStep(t);
     if (o.progress) o.progress({int(lm.iter), residuals.evaluations(), lm.fnorm / std::sqrt(double(f.m))});
   } while (status == Eigen::LevenbergMarquardtSpace::Running);
-  return {f.transform.value(t), int(lm.iter), status_text(status)};
+  using namespace Eigen::LevenbergMarquardtSpace;
+  const bool converged = status == RelativeReductionTooSmall || status == RelativeErrorTooSmall ||
+                         status == RelativeErrorAndReductionTooSmall || status == CosinusTooSmall;
+  return {f.transform.value(t), int(lm.iter), status_text(status), converged};
 }
 
 // The softening and wear alone, from the rules' starting values and from a
@@ -234,6 +258,17 @@ Outcome softening_alone(Residuals& residuals, const std::vector<FitUnknown>& sof
   return best;
 }
 
+// Names of the unknowns, and the positions of those held first when the data
+// determine only a combination (bn, bs, psir: placeholders exist for them).
+std::vector<std::string> labels(const std::vector<FitUnknown>& u, std::vector<int>& prefer) {
+  std::vector<std::string> names;
+  for (size_t k = 0; k < u.size(); ++k) {
+    names.push_back(u[k].label());
+    if (names.back() == "bn" || names.back() == "bs" || names.back() == "psir") prefer.push_back(static_cast<int>(k));
+  }
+  return names;
+}
+
 }  // namespace
 
 FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration& start, const FitOptions& o) {
@@ -243,26 +278,36 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
   std::vector<FitUnknown> all = make_unknowns(curves, start, o.per_sigma_n);
   Eigen::VectorXd v0(long(all.size()));
   for (size_t k = 0; k < all.size(); ++k) v0[long(k)] = std::clamp(parameter_at(base, all[k].index), all[k].lo, all[k].hi);
+  // A linear unknown starts 2 % of its range inside its lower bound (psir
+  // from 0.9 deg), where the transform and the scaled Jacobian see it; held,
+  // it keeps its placeholder (psir 0).
+  Eigen::VectorXd vs = v0;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (all[k].linear) vs[long(k)] = std::max(v0[long(k)], all[k].lo + 0.02 * (all[k].hi - all[k].lo));
   // What the data cannot separate, from the Jacobian at the start.
-  std::vector<std::string> names;
   std::vector<int> prefer;
-  for (size_t k = 0; k < all.size(); ++k) {
-    names.push_back(all[k].label());
-    if (all[k].label() == "bn" || all[k].label() == "bs") prefer.push_back(static_cast<int>(k));
-  }
-  const Eigen::MatrixXd J0 = residuals.jacobian(all, v0, residuals(all, v0));
+  const std::vector<std::string> names = labels(all, prefer);
+  const Eigen::MatrixXd J0 = residuals.jacobian(all, vs, residuals(all, vs));
   std::vector<bool> held(all.size(), false);
-  for (const Unidentifiable& u : unidentifiable(J0, v0, names, prefer)) {
+  for (const Unidentifiable& u : unidentifiable(J0, vs, names, prefer)) {
     held[size_t(u.column)] = true;
     fit.held.push_back(names[size_t(u.column)] + ": held; the data determine only a combination (" + u.direction + ")");
   }
   Eigen::VectorXd v(long(all.size()));
   for (size_t k = 0, j = 0; k < all.size(); ++k)
-    if (!held[k]) fit.unknowns.push_back(all[k]), v[long(j++)] = v0[long(k)];
+    if (!held[k]) fit.unknowns.push_back(all[k]), v[long(j++)] = vs[long(k)];
   v.conservativeResize(long(fit.unknowns.size()));
-  if (fit.unknowns.empty() || residuals.size() <= v.size())
-    throw InputError("the data leave nothing to fit: " + std::to_string(residuals.size()) + " residuals for " +
-                     std::to_string(v.size()) + " unknowns");
+  // Nothing left at the start: no unknown moves the misfit, which happens when
+  // the rules' values break a rule of the law or no run completes (curves
+  // inconsistent with each other, e.g. one specimen at half strength).
+  if (fit.unknowns.empty() || residuals.size() <= v.size()) {
+    const ValidationError e = validate(base);
+    throw InputError("the data leave nothing to fit (" + std::to_string(residuals.size()) + " residuals, " +
+                     std::to_string(v.size()) + " unknowns the misfit depends on): " +
+                     (e.ok() ? std::string("no unknown moves the misfit at the direct rules' values")
+                             : "the direct rules' values break a rule of the law (" + e.message() + ")") +
+                     "; the curves disagree with each other (a specimen unlike the others, a wrong sigma_n?)");
+  }
   // First the softening and wear alone, from the rules' starting values,
   // then everything with the strengths: a joint start from rough softening
   // values was seen to settle in a worse minimum.
@@ -280,12 +325,36 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
     for (size_t k = 0, j = 0; k < fit.unknowns.size(); ++k)
       if (start.entries[size_t(fit.unknowns[k].index)].stage != Stage::refined) v[long(k)] = first.value[long(j++)];
   }
-  const Outcome all_at_once = least_squares(residuals, fit.unknowns, v, o);
-  fit.value = all_at_once.value;
-  fit.iterations = first.iterations + all_at_once.iterations;
-  fit.status = all_at_once.status;
+  Outcome last = least_squares(residuals, fit.unknowns, v, o);
+  fit.iterations = first.iterations + last.iterations;
+  // At the solution: what the data do not determine there is held at its
+  // placeholder (the base value) and the rest refitted from where it stood.
+  for (int round = 0;; ++round) {
+    fit.value = last.value;
+    fit.residuals = residuals(fit.unknowns, fit.value);
+    fit.jacobian = residuals.jacobian(fit.unknowns, fit.value, fit.residuals);
+    std::vector<int> prefer_here;
+    const std::vector<std::string> here = labels(fit.unknowns, prefer_here);
+    std::vector<Unidentifiable> out = unidentifiable(fit.jacobian, fit.value, here, prefer_here);
+    if (out.empty() || round == 3 || out.size() >= fit.unknowns.size()) break;
+    std::vector<bool> drop(fit.unknowns.size(), false);
+    for (const Unidentifiable& u : out) {
+      drop[size_t(u.column)] = true;
+      fit.held.push_back(here[size_t(u.column)] + ": held at the solution; the data determine only a combination (" +
+                         u.direction + ")");
+    }
+    std::vector<FitUnknown> kept;
+    Eigen::VectorXd kv(long(fit.unknowns.size()));
+    for (size_t k = 0; k < fit.unknowns.size(); ++k)
+      if (!drop[k]) kv[long(kept.size())] = fit.value[long(k)], kept.push_back(fit.unknowns[k]);
+    kv.conservativeResize(long(kept.size()));
+    fit.unknowns = kept;
+    last = least_squares(residuals, fit.unknowns, kv, o);
+    fit.iterations += last.iterations;
+  }
+  fit.status = last.status;
+  fit.converged = last.converged;
   fit.residuals = residuals(fit.unknowns, fit.value, &fit.misfit);
-  fit.jacobian = residuals.jacobian(fit.unknowns, fit.value, fit.residuals);
   fit.rms = std::sqrt(fit.residuals.squaredNorm() / double(fit.residuals.size()));
   fit.evaluations = residuals.evaluations();
   return fit;

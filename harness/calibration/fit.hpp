@@ -15,9 +15,11 @@
 // (unsupported/Eigen/NonLinearOptimization, MINPACK's lmder) on t, with a
 // forward-difference Jacobian.
 //
-// Before fitting, parameters the data cannot move independently are found
-// from the Jacobian at the start (calibration/uncertainty.hpp) and held at
-// their placeholders, named in the result.
+// Parameters the data cannot move independently are found from the Jacobian
+// (calibration/uncertainty.hpp) at the start and again at the solution, where
+// it counts: one found there is held at its placeholder and the rest refitted
+// (a forward-difference Jacobian at the start alone missed bs where psir > 0:
+// bs ran to its bound with GIIC 26 times too large). Held ones are named.
 #pragma once
 
 #include <functional>
@@ -38,8 +40,14 @@ struct FitUnknown {
   int index = 0;             // Table 1 position
   double sigma_n = NAN;      // the level it belongs to; NaN: every curve
   double lo = 0, hi = 0;     // bounds [parameter unit]
+  bool linear = false;       // linear logistic transform: lo may be 0, a value the law allows (psir)
   std::string label() const; // "m" or "m @ -0.5 MPa"
 };
+
+// A value within 1 % of a bound the fit imposed (not one the law imposes: a
+// linear unknown's lower bound is the law's own, psir = 0): there the bound
+// stopped the fit, not the data.
+bool on_bound(const FitUnknown& u, double value);
 
 struct FitProgress {
   int iteration = 0;
@@ -59,6 +67,7 @@ struct CurveMisfit {
   std::string curve;
   double rms_traction = 0;  // [MPa]
   double rms_uplift = NAN;  // [mm], NaN without uplift
+  double rms_scaled = 0;    // RMS of its scaled residuals (traction and uplift)
   bool failed = false;      // the simulation could not be completed
 };
 
@@ -73,6 +82,7 @@ struct FitResult {
   long evaluations = 0;
   int iterations = 0;
   std::string status;        // why the solver stopped
+  bool converged = false;    // the solver met a convergence test (not the budget, not machine precision)
 };
 
 // Fits the unknowns, starting from (and holding every other parameter at)

@@ -1,10 +1,35 @@
 #include "calibration/pipeline.hpp"
 
+#include <cstdio>
+#include <set>
+
 namespace mortar::harness {
+
+namespace {
+
+std::string summary(const char* stage, const FitResult& f, const Verdict& v) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%s: %zu unknowns, %zu held, RMS misfit %.4f, %ld simulations of the data set, %s, %s",
+                stage, f.unknowns.size(), f.held.size(), f.rms, f.evaluations, f.converged ? "converged" : "NOT converged",
+                v.accepted() ? "accepted" : "REJECTED");
+  return buf;
+}
+
+}  // namespace
+
+std::vector<std::pair<double, Parameters>> per_level_sets(const std::vector<TestCurve>& curves, const CalibrationRun& r) {
+  std::vector<std::pair<double, Parameters>> out;
+  std::set<double> done;
+  for (const TestCurve& c : curves)
+    if (c.shear() && done.insert(c.sigma_n).second)
+      out.push_back({c.sigma_n, parameters_for(c, r.per_level_base, r.per_level.unknowns, r.per_level.value)});
+  return out;
+}
 
 CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const CalibrationSettings& s) {
   CalibrationRun r;
   r.direct = apply_direct_rules(curves);
+  if (s.stage_done) s.stage_done("stage 1/3, direct rules: ks, kn, ft0, GIC, c0, phi0, phir and the fit's starting values");
   FitOptions one = s.fit;
   one.per_sigma_n = false;
   r.one_set = fit_softening(curves, r.direct.calibration, one);
@@ -12,6 +37,10 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   r.final = r.direct.calibration;
   apply_fit(r.final, r.one_set, r.one_set_uncertainty);
   fill_placeholders(r.final["kn"].stage == Stage::direct, r.final);
+  r.one_set_verdict = judge(r.one_set, {{"", r.final.values()}});
+  judge_entries(r.final, r.one_set_verdict);
+  r.outliers = outliers(r.one_set, curves);
+  if (s.stage_done) s.stage_done(summary("stage 2/3, one set", r.one_set, r.one_set_verdict));
   if (!s.per_sigma_n) return r;
   // m and n per sigma_n start where the one set started, from the rules: the
   // one set's optimum is no start for them when the levels' m and n differ
@@ -21,7 +50,6 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   // per-level fit stayed at 0.23, against 0.0096 from the rules.
   FitOptions per = s.fit;
   per.per_sigma_n = true;
-  per.progress = s.per_level_progress;
   r.per_level = fit_softening(curves, r.direct.calibration, per);
   r.per_level_base = r.direct.calibration.values();
   // One set is a special case of m and n per level, so the per-level misfit
@@ -33,6 +61,14 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   }
   r.per_level_uncertainty = uncertainty_from(r.per_level.jacobian, r.per_level.residuals);
   r.per_level_fitted = true;
+  std::vector<std::pair<std::string, Parameters>> sets;
+  for (const auto& [sigma_n, p] : per_level_sets(curves, r)) {
+    char label[48];
+    std::snprintf(label, sizeof label, "sigma_n = %g MPa: ", sigma_n);
+    sets.push_back({label, p});
+  }
+  r.per_level_verdict = judge(r.per_level, sets);
+  if (s.stage_done) s.stage_done(summary("stage 3/3, m and n per sigma_n", r.per_level, r.per_level_verdict));
   return r;
 }
 

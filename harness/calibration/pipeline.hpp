@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include "calibration/acceptance.hpp"
 #include "calibration/direct_rules.hpp"
 #include "calibration/fit.hpp"
 #include "calibration/uncertainty.hpp"
@@ -22,12 +23,18 @@ struct CalibrationRun {
   FitResult per_level;  // m and n per sigma_n (when per_level_fitted)
   Parameters per_level_base;  // its start: the values of what it did not fit
   Uncertainty per_level_uncertainty;
+  Verdict one_set_verdict;    // calibration/acceptance.hpp: may `final` be handed over?
+  Verdict per_level_verdict;  // and the sets per sigma_n
+  std::vector<std::string> outliers;  // points far off the one set's fit (acceptance.hpp)
 };
+
+// The parameter set of each normal stress of a per-level fit: (sigma_n, set).
+std::vector<std::pair<double, Parameters>> per_level_sets(const std::vector<TestCurve>& curves, const CalibrationRun& r);
 
 struct CalibrationSettings {
   FitOptions fit;            // of the one set (its per_sigma_n is ignored)
   bool per_sigma_n = false;  // also fit m and n per normal stress
-  std::function<void(const FitProgress&)> per_level_progress;
+  std::function<void(const std::string&)> stage_done;  // one line per finished stage (progress)
 };
 
 CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const CalibrationSettings& s);

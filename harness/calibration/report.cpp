@@ -64,11 +64,26 @@ void per_level_values(std::ostream& out, const FitResult& fit, const Uncertainty
         << number(u.std_error[long(k)], 2) << " |\n";
 }
 
+void verdict_section(std::ostream& md, const Verdict* v, const char* what, const char* ready) {
+  if (!v) return;
+  if (v->accepted()) {
+    md << "**" << what << ": accepted** (" << ready << "): converged, RMS misfit within " << kMaxMisfit
+       << " of the curves' scale (" << kMaxCurveMisfit << " per curve), no fitted value on a bound, all finite.\n\n";
+    return;
+  }
+  md << "**" << what << ": REJECTED** (written as *.rejected.toml, not for use):\n\n";
+  for (const std::string& reason : v->reasons) md << "- " << reason << "\n";
+  md << "\n";
+}
+
 }  // namespace
 
 void write_report(std::ostream& out, const std::string& out_dir, const CalibrationReport& r) {
   std::ostringstream md;
-  md << "# Calibration\n\n" << r.curves->size() << " curves:";
+  md << "# Calibration\n\n";
+  verdict_section(md, r.verdict, "One set", "params.toml");
+  verdict_section(md, r.per_level_verdict, "m and n per normal stress", "params_sn*.toml");
+  md << r.curves->size() << " curves:";
   for (const TestCurve& c : *r.curves)
     md << " " << c.name << " (" << test_kind_name(c.kind) << (c.shear() ? ", σn = " + number(c.sigma_n) + " MPa" : "")
        << (c.has_uplift() ? ", uplift" : "") << ")";
@@ -86,6 +101,11 @@ void write_report(std::ostream& out, const std::string& out_dir, const Calibrati
     per_level_values(md, *r.per_level, *r.per_level_uncertainty);
   }
   correlations(md, *r.one_set, *r.uncertainty);
+  if (r.outliers && !r.outliers->empty()) {
+    md << "\n## Outliers\n\nPoints whose residual exceeds " << kOutlierFactor
+       << " times the robust scatter of all points (calibration/acceptance.hpp); check them in the data:\n\n";
+    for (const std::string& o : *r.outliers) md << "- " << o << "\n";
+  }
   md << "\n## Notes\n\n";
   for (const std::string& h : r.one_set->held) md << "- held: " << h << "\n";
   for (const std::string& n : r.final.notes) md << "- " << n << "\n";
@@ -113,47 +133,6 @@ void write_fit_curves(const std::string& out_dir, const std::vector<TestCurve>& 
     if (c.has_uplift()) header.insert(header.end(), {"uplift_data_mm", "uplift_fit_mm", "uplift_residual_mm"});
     write_csv(out_dir + "/fit_" + c.name + ".csv", header, rows);
   }
-}
-
-std::string write_calibration_plots(const std::string& out_dir, const std::vector<TestCurve>& curves) {
-  static const char* colour[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"};
-  const std::string name = "calibration.gp";
-  std::ofstream g(out_dir + "/" + name);
-  if (!g) throw InputError(cannot_write(out_dir + "/" + name));
-  g << "# Written by masonry-joint calibrate; rerun with: gnuplot " << name << "\nset datafile separator \",\"\n";
-  struct Panel {
-    const char *title, *xlabel, *ylabel, *data, *fit;
-    bool (*wanted)(const TestCurve&);
-  };
-  const Panel panels[] = {
-      {"Shear: data (points) and fit (lines)", "slip [mm]", "{/Symbol t} [MPa]", "2", "3",
-       [](const TestCurve& c) { return c.shear(); }},
-      {"Dilatancy", "slip [mm]", "uplift [mm]", "5", "6", [](const TestCurve& c) { return c.has_uplift(); }},
-      {"Tension", "opening [mm]", "{/Symbol s}_n [MPa]", "2", "3", [](const TestCurve& c) { return !c.shear(); }},
-      {"Residuals (fit - data)", "slip or opening [mm]", "[MPa]", "4", "", [](const TestCurve&) { return true; }}};
-  for (const char* ext : {"png", "svg"}) {
-    g << "\nset terminal " << (ext[0] == 'p' ? "pngcairo" : "svg")
-      << " size 1200,900 enhanced font \"DejaVu Sans,11\" background \"white\"\nset output \"calibration." << ext
-      << "\"\nset grid lc rgb \"#c8c8c8\"\nset key outside right\nset multiplot layout 2,2 title \"Calibration\"\n";
-    for (const Panel& p : panels) {
-      g << "set title " << quoted(p.title) << "\nset xlabel " << quoted(p.xlabel) << "\nset ylabel " << quoted(p.ylabel)
-        << "\nplot ";
-      std::string sep;
-      for (size_t i = 0; i < curves.size(); ++i) {
-        if (!p.wanted(curves[i])) continue;
-        const std::string file = quoted("fit_" + curves[i].name + ".csv"), col = quoted(colour[i % 6]);
-        g << sep << file << " using 1:" << p.data << " with points pt 6 lc rgb " << col << " title "
-          << quoted(curves[i].name) << " noenhanced";
-        if (*p.fit) g << ", " << file << " using 1:" << p.fit << " with lines lw 2 lc rgb " << col << " notitle";
-        sep = ", \\\n     ";
-      }
-      if (sep.empty()) g << "NaN notitle";
-      g << "\n";
-    }
-    g << "unset multiplot\nset output\n";
-  }
-  if (!g) throw InputError(out_dir + "/" + name + ": write failed");
-  return name;
 }
 
 }  // namespace mortar::harness

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "calibration/acceptance.hpp"
 #include "calibration/calibration.hpp"
 #include "calibration/direct_rules.hpp"
 #include "calibration/fit.hpp"
@@ -24,6 +25,9 @@ struct CalibrationReport {
   const Uncertainty* uncertainty = nullptr;
   const FitResult* per_level = nullptr;  // m and n per sigma_n, or null
   const Uncertainty* per_level_uncertainty = nullptr;
+  const Verdict* verdict = nullptr;            // of the one set (calibration/acceptance.hpp)
+  const Verdict* per_level_verdict = nullptr;  // of the sets per sigma_n
+  const std::vector<std::string>* outliers = nullptr;
 };
 
 // The report as Markdown: printed and written to <out_dir>/report.md.
@@ -35,8 +39,11 @@ void write_fit_curves(const std::string& out_dir, const std::vector<TestCurve>& 
                       const Parameters& base, const SimulationSettings& settings);
 
 // <out_dir>/calibration.gp, and with gnuplot calibration.png and .svg: data
-// against the fitted curves (shear, dilatancy, tension) and the residuals.
-// Returns the script's name.
-std::string write_calibration_plots(const std::string& out_dir, const std::vector<TestCurve>& curves);
+// against the fitted curves (shear and dilatancy on a log slip axis, where
+// the peaks show; tension), each curve labelled by its sigma_n and misfit,
+// and below each the residuals of that quantity alone; the RMS misfit, the
+// verdict and the parameter values in the title. Returns the script's name.
+std::string write_calibration_plots(const std::string& out_dir, const std::vector<TestCurve>& curves,
+                                    const CalibrationReport& r);
 
 }  // namespace mortar::harness

@@ -1,5 +1,7 @@
 #include "calibration/test_curve.hpp"
 
+#include "calibration/curve_checks.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -115,6 +117,7 @@ TestCurve read_test_curve(const std::string& path) {
   if (t.column("uplift_mm") >= 0) c.uplift = t.values("uplift_mm");
   if (c.x.size() < 4)
     throw InputError(path + ": " + std::to_string(c.x.size()) + " points; a curve needs at least 4");
+  check_curve_values(c);  // before the order: a negative slip is a sign mistake
   if (c.kind != TestKind::cyclic_shear)
     for (size_t i = 1; i < c.x.size(); ++i)
       if (c.x[i] < c.x[i - 1])

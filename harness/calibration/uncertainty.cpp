@@ -96,7 +96,7 @@ void apply_fit(Calibration& cal, const FitResult& fit, const Uncertainty& u) {
     // fit, not where the data put it: the one-set misfit of curves whose m
     // and n differ by level ends so (m at 1e5, n at 1 on van der Pluijm's).
     const FitUnknown& f = fit.unknowns[k];
-    if (e.value <= 1.01 * f.lo || e.value >= f.hi / 1.01)
+    if (on_bound(f, e.value))
       cal.notes.push_back(f.label() + " = " + std::to_string(e.value) + " is on its bound [" + std::to_string(f.lo) +
                           ", " + std::to_string(f.hi) + "]: the fit was stopped there, not by the data; its value and "
                           "standard error are not estimates (if m or n, compare the misfit of m and n per sigma_n)");

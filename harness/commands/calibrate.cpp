@@ -2,7 +2,7 @@
 
 #include <filesystem>
 #include <ostream>
-#include <set>
+#include <system_error>
 
 #include "calibration/pipeline.hpp"
 #include "calibration/report.hpp"
@@ -17,35 +17,37 @@ namespace mortar::harness {
 
 namespace {
 
-// Progress of one fit on stderr: iteration, simulations, RMS misfit.
-std::function<void(const FitProgress&)> progress_line(std::ostream& err, const std::string& label, bool quiet) {
-  if (quiet) return {};
-  return [&err, label](const FitProgress& p) {
-    err << "calibrate: " << label << ": iteration " << p.iteration << ", " << p.evaluations
-        << " simulations, RMS misfit " << p.rms << "\n";
-  };
-}
-
 std::string level_tag(double sigma_n) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%g", -sigma_n);
   return buf;
 }
 
-void write_per_level_files(const std::string& out_dir, const std::vector<TestCurve>& curves, const FitResult& fit,
-                           const Parameters& base) {
-  std::set<double> done;
-  for (const TestCurve& c : curves) {
-    if (!c.shear() || !done.insert(c.sigma_n).second) continue;
-    write_parameter_file(out_dir + "/params_sn" + level_tag(c.sigma_n) + ".toml",
-                         parameters_for(c, base, fit.unknowns, fit.value),
-                         {"Calibrated by masonry-joint calibrate: m and n for sigma_n = " + level_tag(-c.sigma_n) +
-                          " MPa (report.md)"});
+// A set is written as <stem>.toml when accepted, else as <stem>.rejected.toml
+// with the reasons in its header; the other name is removed, so that no
+// earlier run's ready file stays beside a rejected one.
+void write_set(const std::string& out_dir, const std::string& stem, const Parameters& p, std::vector<std::string> header,
+               const Verdict& v) {
+  const std::string ready = out_dir + "/" + stem + ".toml", rejected = out_dir + "/" + stem + ".rejected.toml";
+  std::error_code ec;
+  fs::remove(v.accepted() ? rejected : ready, ec);
+  if (!v.accepted()) {
+    header.insert(header.begin(), "REJECTED: NOT a calibrated set; do not use it for an analysis. The reasons:");
+    for (size_t k = 0; k < v.reasons.size(); ++k) header.insert(header.begin() + long(k) + 1, "  - " + v.reasons[k]);
   }
+  write_parameter_file(v.accepted() ? ready : rejected, p, header);
 }
 
-void draw(const std::string& out_dir, const std::vector<TestCurve>& curves, std::ostream& err) {
-  const std::string script = write_calibration_plots(out_dir, curves);
+void write_per_level_files(const std::string& out_dir, const std::vector<TestCurve>& curves, const CalibrationRun& r) {
+  for (const auto& [sigma_n, p] : per_level_sets(curves, r))
+    write_set(out_dir, "params_sn" + level_tag(sigma_n), p,
+              {"Calibrated by masonry-joint calibrate: m and n for sigma_n = " + level_tag(-sigma_n) + " MPa (report.md)"},
+              r.per_level_verdict);
+}
+
+void draw(const std::string& out_dir, const std::vector<TestCurve>& curves, const CalibrationReport& r,
+          std::ostream& err) {
+  const std::string script = write_calibration_plots(out_dir, curves, r);
   if (!gnuplot_available()) {
     err << "calibrate: warning: gnuplot not found on the PATH; " << script << " written, no charts drawn\n";
     return;
@@ -63,23 +65,37 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
   prepare_output_folder(o.out_dir, "--out");
   CalibrationSettings settings;
   settings.fit.simulation.increments = o.increments;
-  settings.fit.progress = progress_line(err, "one set", o.quiet);
   settings.per_sigma_n = o.per_sigma_n;
-  settings.per_level_progress = progress_line(err, "m and n per sigma_n", o.quiet);
+  if (!o.quiet) settings.stage_done = [&err](const std::string& line) { err << "calibrate: " << line << "\n"; };
   const CalibrationRun run = calibrate_curves(curves, settings);
   CalibrationReport report{&curves, &run.direct, run.final, &run.one_set, &run.one_set_uncertainty};
+  report.verdict = &run.one_set_verdict;
+  report.outliers = &run.outliers;
   if (run.per_level_fitted) {
     report.per_level = &run.per_level, report.per_level_uncertainty = &run.per_level_uncertainty;
-    write_per_level_files(o.out_dir, curves, run.per_level, run.per_level_base);
+    report.per_level_verdict = &run.per_level_verdict;
+    write_per_level_files(o.out_dir, curves, run);
   }
-  write_parameter_file(o.out_dir + "/params.toml", report.final.values(),
-                       {"Calibrated by masonry-joint calibrate from " + o.data_dir,
-                        "Values, standard errors and how each was set: report.md"});
+  write_set(o.out_dir, "params", report.final.values(),
+            {"Calibrated by masonry-joint calibrate from " + o.data_dir,
+             "Values, standard errors and how each was set: report.md"},
+            run.one_set_verdict);
   write_fit_curves(o.out_dir, curves, run.one_set, run.direct.calibration.values(), settings.fit.simulation);
   write_report(out, o.out_dir, report);
-  if (o.plots) draw(o.out_dir, curves, err);
-  if (!o.quiet) err << "calibrate: params.toml, report.md, fit_*.csv and charts in " << o.out_dir << "/\n";
-  return 0;
+  if (o.plots) draw(o.out_dir, curves, report, err);
+  for (const std::string& line : run.outliers) err << "calibrate: warning: " << line << "\n";
+  // The one set decides, unless the sets per sigma_n were asked for and pass.
+  const bool handed = run.one_set_verdict.accepted() || (run.per_level_fitted && run.per_level_verdict.accepted());
+  for (const auto* v : {&run.one_set_verdict, run.per_level_fitted ? &run.per_level_verdict : nullptr}) {
+    if (!v || v->accepted()) continue;
+    err << "calibrate: " << (v == &run.one_set_verdict ? "the one set" : "the sets per sigma_n")
+        << " is REJECTED (written as *.rejected.toml, not for use):\n";
+    for (const std::string& reason : v->reasons) err << "calibrate:   - " << reason << "\n";
+  }
+  if (!o.quiet || !handed)
+    err << "calibrate: " << (run.one_set_verdict.accepted() ? "params.toml" : "params.rejected.toml")
+        << ", report.md, fit_*.csv and charts in " << o.out_dir << "/\n";
+  return handed ? 0 : kCalibrationRejected;
 }
 
 }  // namespace mortar::harness

@@ -18,7 +18,12 @@ struct CalibrateOptions {
   bool quiet = false;
 };
 
-// Returns the exit status (0). InputError for bad data or options.
+// Exit status of a calibration whose set is rejected (calibration/acceptance.hpp):
+// params.rejected.toml with the reasons, no params.toml.
+inline constexpr int kCalibrationRejected = 3;
+
+// Returns the exit status: 0, or kCalibrationRejected. InputError for bad
+// data or options.
 int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream& err);
 
 }  // namespace mortar::harness

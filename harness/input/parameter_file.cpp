@@ -1,5 +1,6 @@
 #include "input/parameter_file.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -104,6 +105,10 @@ void write_parameter_file(const std::string& path, const Parameters& p, const st
   for (const std::string& line : header) out << "# " << line << "\n";
   for (int i = 0; i < kParameterCount; ++i) {
     const double x = parameter_at(p, i);
+    if (!std::isfinite(x)) {  // never written as a value: the file would not read back
+      out << "# " << kParameterInfo[i].name << " = not finite (" << x << "): no value\n";
+      continue;
+    }
     char number[40];
     for (int digits = 6; digits <= 17; ++digits) {
       std::snprintf(number, sizeof number, "%.*g", digits, x);

@@ -24,7 +24,8 @@ ParameterSet read_parameter_file(const std::string& path);
 
 // Writes a parameter file that read_parameter_file reads back exactly: every
 // parameter as {value, unit} with the shortest decimal that round-trips, its
-// meaning as a comment, and `header` as '#' lines first.
+// meaning as a comment, and `header` as '#' lines first. A non-finite value is
+// never written: its line is a comment saying so (the file then does not read).
 void write_parameter_file(const std::string& path, const Parameters& p, const std::vector<std::string>& header);
 
 // The unit spellings accepted for parameter `index` (the canonical one first).

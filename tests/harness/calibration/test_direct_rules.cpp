@@ -43,7 +43,9 @@ TEST_CASE("direct rules recover van der Pluijm's stiffnesses, strengths and GIC"
     INFO(name);
     CHECK(relative(c, p, name) < 0.01);
   }
-  CHECK(c["psir"].stage == Stage::not_determined);
+  // With the uplift measured psir is the fit's (from 0, its placeholder).
+  CHECK(c["psir"].stage == Stage::fit);
+  CHECK(c["psir"].value == 0);
 }
 
 // kn, ks, ft0 and GIC over seeds, on Table 1's three series and two random

@@ -51,3 +51,27 @@ TEST_CASE("bad test curves are errors naming the rule", "[calibration]") {
                                                            "0,0\n0.02,0.5\n0.01,0.6\n0.03,0.4\n")),
                     Catch::Contains("row 3: slip 0.010000 mm is below the row before"));
 }
+
+// Values that break no rule of the format but cannot be a joint test's
+// (calibration/curve_checks.hpp): each names the file, the row and the rule.
+TEST_CASE("implausible test curves are errors naming the file and the rule", "[calibration]") {
+  const std::string shear = "# kind: shear\n# sigma_n: -0.5 MPa\nslip_mm,tau_MPa\n";
+  const std::string tension = "# kind: tension\nopening_mm,sigma_MPa\n";
+  struct Bad {
+    const char *name, *text, *message;
+  } bad[] = {
+      {"zero", "0,0\n0.01,0\n0.02,0\n0.03,0\n", "zero.csv: every tau is zero"},
+      {"huge", "0,0\n0.01,0.5\n0.02,1e30\n0.03,0.4\n", "huge.csv: data row 3: tau = 1e+30 MPa is outside the plausible range"},
+      {"negative", "0,0\n0.01,-0.5\n0.02,-0.6\n0.03,-0.4\n", "tau is negative (largest |tau| = -0.6 MPa at data row 3)"},
+      {"backwards_slip", "0,0\n-0.01,0.5\n-0.02,0.6\n-0.03,0.4\n", "slip ends negative (-0.03 mm)"},
+      {"no_peak", "0,0\n0.01,0.5\n0.02,0.6\n0.03,0.7\n", "the shear curve ends at its largest value (0.7 MPa at data row 4 of 4)"},
+  };
+  for (const Bad& b : bad) {
+    INFO(b.name);
+    CHECK_THROWS_WITH(read_test_curve(file_with(b.name, shear + b.text)), Catch::Contains(b.message));
+  }
+  // A tension curve cut just after its peak is not read as a snap-back.
+  CHECK_THROWS_WITH(read_test_curve(file_with("cut", tension + "0,0\n0.001,0.3\n0.002,0.6\n0.0025,0.58\n")),
+                    Catch::Contains("cut.csv: the tension curve ends within 10 % of its largest value"));
+  CHECK_NOTHROW(read_test_curve(file_with("snap", tension + "0,0\n0.001,0.3\n0.002,0.6\n0.0021,0.01\n")));
+}
