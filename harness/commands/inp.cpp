@@ -1,6 +1,7 @@
 #include "commands/inp.hpp"
 
 #include "commands/run.hpp"
+#include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
@@ -8,6 +9,8 @@
 namespace mortar::harness {
 
 int inp_command(const InpArgs& a, std::ostream& out) {
+  if (const std::string problem = abaqus_name_problem(a.name); !problem.empty())
+    throw InputError("--name '" + a.name + "' " + problem + ": " + kAbaqusNameRule);
   check_stol(a.stol);
   const ParameterSet params = read_parameter_file(a.params);
   Controls c;
