@@ -12,6 +12,8 @@
 //    so tau = -stress(2..nDir).
 #pragma once
 
+#include "adapter/arguments.hpp"
+
 namespace mortar::harness::abi_signs {
 
 inline double penetration_for_opening(double opening) { return -opening; }
@@ -21,6 +23,11 @@ inline double normal_traction_from_stress(double stress1) { return -stress1; }
 // by the adapter (it takes the normal separation from `penetration`); the
 // harness passes it consistently as the increment of penetration.
 inline double normal_dr_disp(double d_opening) { return -d_opening; }
+
+// An opening this large is a penetration the adapters take for "no opposite
+// surface" (Abaqus passes about -1e36 there): zero traction, the state left
+// as it is, no law (docs/abaqus.md, Unpaired slave nodes).
+inline bool unpaired(double opening) { return penetration_for_opening(opening) <= mj_adapter::kUnpairedPenetration; }
 
 inline constexpr double kSlipSign = 1.0;    // drDisp(1+i) = kSlipSign * d(delta_s_i)
 inline constexpr double kShearSign = -1.0;  // tau_i = kShearSign * stress(1+i), the adapter's default props(20)

@@ -9,6 +9,8 @@
 namespace mortar::harness {
 
 int inp_command(const InpArgs& a, std::ostream& out) {
+  if (const std::string problem = abaqus_name_problem(a.name); !problem.empty())
+    throw InputError("--name '" + a.name + "' " + problem + ": " + kAbaqusNameRule);
   if (inp_writes_job(a)) return inp_job_command(a, out);
   if (a.params.empty()) throw InputError("inp: --params FILE is needed (or --scene FILE)");
   check_stol(a.stol);

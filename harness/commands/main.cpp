@@ -11,6 +11,7 @@
 
 #include "commands/bench.hpp"
 #include "commands/calibrate.hpp"
+#include "commands/command_line.hpp"
 #include "commands/inp.hpp"
 #include "commands/run.hpp"
 #include "commands/scene.hpp"
@@ -34,6 +35,7 @@ constexpr int kExitBadInput = 2;      // bad arguments or input files
 int main(int argc, char** argv) {
   CLI::App app{"masonry-joint: mock Abaqus/Explicit (VUINTERACTION) and Abaqus/Standard (UINTER) solver for the mortar joint"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", version_text());
   std::vector<std::string> scheme_names;
   for (const auto& s : mortar::harness::scheme_names()) scheme_names.push_back(s.first);
 
@@ -64,7 +66,8 @@ int main(int argc, char** argv) {
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress or summary on stderr");
 
   ValidateOptions val;
-  val.data_dir = MJ_CALIBRATION_DATA_DIR;
+  const std::string data_dir = default_data_dir(MJ_CALIBRATION_DATA_DIR);
+  val.data_dir = data_dir;
   bool no_plots = false;
   CLI::App* val_cmd = app.add_subcommand("validate", "Run and check the three test series of calibration_data/");
   val_cmd->add_option("--out", val.out_dir, "Folder for CSVs, charts and the table")->capture_default_str();
@@ -91,7 +94,7 @@ int main(int argc, char** argv) {
   inp_cmd->add_option("--name", inp.name, "NAME of the surface interaction")->capture_default_str();
 
   BenchOptions bench;
-  bench.data_dir = MJ_CALIBRATION_DATA_DIR;
+  bench.data_dir = data_dir;
   bool bench_no_plots = false;
   CLI::App* bench_cmd = app.add_subcommand("bench", "Work-precision study and stability map of the schemes");
   bench_cmd->add_flag("--quick", bench.quick, "Fewer increment sizes, tolerances and paths (for CI)");
@@ -135,6 +138,13 @@ int main(int argc, char** argv) {
   cal_cmd->add_flag("--no-plots", cal_no_plots, "Skip the charts");
   cal_cmd->add_flag("--quiet,-q", cal.quiet, "No progress on stderr");
 
+  std::vector<std::string> subcommands;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    subcommands.push_back(sub->get_name());
+  if (const std::string unknown = unknown_subcommand(argc, argv, subcommands); !unknown.empty()) {
+    std::cerr << "masonry-joint: " << unknown << "\n";
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -156,12 +166,19 @@ int main(int argc, char** argv) {
       return calibrate_command(cal, std::cout, std::cerr);
     }
     if (*bench_cmd && throughput) {
+      for (const char* ignored : {"--out", "--path", "--budget", "--no-plots"})
+        if (bench_cmd->count(ignored) > 0)
+          throw InputError(std::string(ignored) +
+                           " is an option of the work-precision study, not of bench --throughput (which prints "
+                           "its table and writes no file); --throughput takes --repeats, --quick, --data, --quiet");
       throughput_options.data_dir = bench.data_dir;
       throughput_options.quick = bench.quick;
       throughput_options.quiet = bench.quiet;
       return run_throughput_command(throughput_options, std::cout, std::cerr);
     }
     if (*bench_cmd) {
+      if (bench_cmd->count("--repeats") > 0)
+        throw InputError("--repeats is an option of bench --throughput only");
       bench.plots = !bench_no_plots;
       return run_bench_command(bench, std::cout, std::cerr);
     }

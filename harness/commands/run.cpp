@@ -9,6 +9,7 @@
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
 #include "input/protocol.hpp"
+#include "abi/vuinteraction_signs.hpp"
 #include "output/csv.hpp"
 #include "output/flag_tally.hpp"
 #include "output/output_paths.hpp"
@@ -138,6 +139,7 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
             params.values, scene, settings,
             [&](int point, const Sample& s) {
               flags.add(point, s.integration_flags);
+              if (abi_signs::unpaired(s.separation[0])) flags.add_unpaired(point);
               output.write(s);
             },
             output.progress(), residuals);
@@ -145,6 +147,7 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
       err);
   if (!completed) return 1;
   if (!a.quiet) summary(a, stats, flags, err);
+  if (const std::string w = flags.unpaired_warning(); !w.empty()) err << "run: " << w << "\n";
   return 0;
 }
 
@@ -180,6 +183,7 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
             params.values, scene, settings,
             [&](int point, const Sample& s) {
               flags.add(point, s.integration_flags);
+              if (abi_signs::unpaired(s.separation[0])) flags.add_unpaired(point);
               if (point == 0) {
                 first = s;
                 output.write(s);
@@ -201,6 +205,7 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
     err << "run: " << flags.summary() << "\n";
     err << "run: wrote " << a.out << "\n";
   }
+  if (const std::string w = flags.unpaired_warning(); !w.empty()) err << "run: " << w << "\n";
   if (worst != 0) {
     err << "masonry-joint run: identical points gave different results (largest difference " << worst
         << "): the result depends on the blocking\n";

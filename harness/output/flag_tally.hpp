@@ -22,8 +22,16 @@ class FlagTally {
   std::string summary(bool increments = true) const;
   std::array<int, integration_flag::kCount> points() const;
 
+  // Point `point` went through `increments` increment(s) opened so far that
+  // the routine took it as unpaired (abi_signs::unpaired): not integrated.
+  void add_unpaired(int point, long increments = 1);
+  // "" when none; else a warning naming the increments and points (the
+  // routine's answer there, zero traction, is not the law's).
+  std::string unpaired_warning() const;
+
  private:
   std::vector<int> last_;
+  std::vector<long> unpaired_;
   std::array<long, integration_flag::kCount> raised_{};
 };
 

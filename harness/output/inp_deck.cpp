@@ -20,6 +20,20 @@ std::string exact_decimal(double x) {
   return s;
 }
 
+std::string abaqus_name_problem(const std::string& name) {
+  if (name.empty()) return "is empty";
+  if (name.size() > 80) return "has " + std::to_string(name.size()) + " characters";
+  const auto letter = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); };
+  if (!letter(name[0])) return "does not start with a letter";
+  for (const char c : name) {
+    if (letter(c) || (c >= '0' && c <= '9') || c == '_' || c == '-') continue;
+    if (c == ' ') return "holds a space";
+    if (c < 32 || c > 126) return "holds a character outside printable ASCII";
+    return std::string("holds '") + c + "'";
+  }
+  return "";
+}
+
 namespace {
 std::string prop_name(size_t i) {
   if (i < static_cast<size_t>(kParameterCount)) return kParameterInfo[i].name;

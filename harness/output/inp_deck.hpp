@@ -21,6 +21,13 @@ struct InpOptions {
   bool standard = false;        // UINTER (Abaqus/Standard) instead of VUINTERACTION
 };
 
+// "" when `name` is a valid unquoted Abaqus name (the input syntax rules:
+// 1-80 characters, the first a letter, then letters, digits, '_' or '-' as
+// in Abaqus/CAE's own "Part-1"); otherwise what is wrong with it.
+std::string abaqus_name_problem(const std::string& name);
+inline constexpr const char* kAbaqusNameRule =
+    "an Abaqus name has 1 to 80 characters, starts with a letter and holds only letters, digits, '_' and '-'";
+
 void write_surface_interaction(std::ostream& out, const InpOptions& options);
 
 // props(1..14), and props(15..16) (scheme, STOL; 0 = the routine's default)

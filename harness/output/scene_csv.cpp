@@ -97,7 +97,7 @@ std::string scene_summary(const SceneSpec& spec, const WallModel& m, const WallR
     << "energy balance error: " << balance << " of the external work at the end, at most " << r.max_balance_error
     << " of the largest external work so far in the displacement stage\n"
     << "kinetic / internal energy in the displacement stage: at most " << r.max_kinetic_ratio << "\n"
-    << r.integration_flags << "\n";
+    << r.integration_flags << "\n" << (r.unpaired_warning.empty() ? "" : r.unpaired_warning + "\n");
   return o.str();
 }
 

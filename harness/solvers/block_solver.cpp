@@ -235,9 +235,12 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   }
   sum.increments = n_end;
   FlagTally flags;
-  for (int i = 0; i < static_cast<int>(model_.points.size()); ++i)
+  for (int i = 0; i < static_cast<int>(model_.points.size()); ++i) {
     flags.add(i, static_cast<int>(joints.state(i, flag_slot::integration_flags)));
+    flags.add_unpaired(i, joints.unpaired(i));
+  }
   sum.integration_flags = flags.summary(false);
+  sum.unpaired_warning = flags.unpaired_warning();
   sum.seconds_in_routine = joints.seconds_in_routine();
   sum.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock_start).count();
   return sum;

@@ -74,6 +74,7 @@ struct WallRunSummary {
   double max_kinetic_ratio = 0;  // largest kinetic / internal energy in the displacement stage
   double max_balance_error = 0;  // largest |balance| / max(external work so far), displacement stage
   std::string integration_flags;  // the points' SDV 35 at the end (output/flag_tally.hpp)
+  std::string unpaired_warning;   // "" or the points the routine took as unpaired (flag_tally.hpp)
   double point_updates_per_second() const { return seconds > 0 ? points * double(increments) / seconds : 0; }
 };
 

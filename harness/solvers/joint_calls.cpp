@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "abi/status.hpp"
+#include "abi/vuinteraction_signs.hpp"
 #include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
@@ -38,6 +39,7 @@ JointCalls::JointCalls(const WallModel& model, const AbiSetup& setup, int block,
   slip_.assign(n, 0.0);
   sigma_.assign(n, 0.0);
   tau_.assign(n, 0.0);
+  unpaired_.assign(n, 0);
 }
 
 double JointCalls::state(int i, int slot) const {
@@ -60,6 +62,7 @@ void JointCalls::update(const std::vector<double>& q, const CallTime& time) {
     const double opening = dx * p.nx + dy * p.ny, slip = dx * p.tx() + dy * p.ty();
     const Eigen::Vector3d d(opening - opening_[i], slip - slip_[i], 0.0);
     blocks_[i / block_size_].set_separation_increment(static_cast<int>(i % block_size_), opening, d);
+    if (abi_signs::unpaired(opening)) ++unpaired_[i];
     opening_[i] = opening;
     slip_[i] = slip;
   }

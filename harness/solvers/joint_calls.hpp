@@ -38,6 +38,9 @@ class JointCalls {
   double slip(int i) const { return slip_[i]; }
   double sigma(int i) const { return sigma_[i]; }
   double tau(int i) const { return tau_[i]; }
+  // Increments in which point i was opened so far that the routine took it
+  // as unpaired (abi_signs::unpaired): not integrated.
+  long unpaired(int i) const { return unpaired_[i]; }
   double state(int i, int slot) const;  // SDV slot+1
   // Sums over the points, times the tributary areas [N·mm]: sed, and the
   // accumulated spd + sfd of every call so far.
@@ -57,6 +60,7 @@ class JointCalls {
   std::vector<AbiBlock> blocks_;
   int block_size_, threads_;
   std::vector<double> opening_, slip_, sigma_, tau_;
+  std::vector<long> unpaired_;
   double dissipated_ = 0, seconds_ = 0;
 };
 

@@ -24,6 +24,23 @@ const std::array<ParameterInfo, kParameterCount> kParameterInfo = {{
     {"bs", "-", "crack-to-plastic ratio, shear"},
 }};
 
+const std::array<ParameterRange, kParameterCount> kParameterRange = {{
+    {0.01, 1e6, false, false, "0.01 <= kn <= 1e6 N/mm^3"},
+    {0.01, 1e6, false, false, "0.01 <= ks <= 1e6 N/mm^3"},
+    {1e-6, 100, false, false, "1e-6 <= ft0 <= 100 MPa"},
+    {1e-6, 100, false, false, "1e-6 <= c0 <= 100 MPa"},
+    {1e-9, 100, false, false, "1e-9 <= GIC <= 100 N/mm"},
+    {1e-9, 100, false, false, "1e-9 <= GIIC <= 100 N/mm"},
+    {0, 90, true, true, "0 < phi0 < 90 degrees"},
+    {0, 90, true, true, "0 < phir < 90 degrees"},
+    {0, 1e7, false, false, "0 <= m <= 1e7 mm/N"},
+    {0, 90, false, true, "0 <= psi0 < 90 degrees"},
+    {0, 90, false, true, "0 <= psir < 90 degrees"},
+    {0, 1e7, false, false, "0 <= n <= 1e7 mm/N"},
+    {0, 1000, false, false, "0 <= bn <= 1000"},
+    {0, 1000, false, false, "0 <= bs <= 1000"},
+}};
+
 namespace {
 double* slot(Parameters& p, int i) {
   double* table[kParameterCount] = {&p.kn,   &p.ks,   &p.ft0, &p.c0,   &p.GIC,
@@ -85,22 +102,15 @@ ValidationError validate(const Parameters& p) {
     double v = parameter_at(p, i);
     if (!std::isfinite(v)) return fail(i, v, "must be a finite number");
   }
-  if (!(p.kn > 0)) return fail(0, p.kn, "kn > 0");
-  if (!(p.ks > 0)) return fail(1, p.ks, "ks > 0");
-  if (!(p.ft0 > 0)) return fail(2, p.ft0, "ft0 > 0");
-  if (!(p.c0 > 0)) return fail(3, p.c0, "c0 > 0");
-  if (!(p.GIC > 0)) return fail(4, p.GIC, "GIC > 0");
-  if (!(p.GIIC > 0)) return fail(5, p.GIIC, "GIIC > 0");
-  if (!(p.phi0 < 90)) return fail(6, p.phi0, "phi0 < 90 degrees");
-  if (!(p.phir > 0)) return fail(7, p.phir, "phir > 0 degrees");
+  for (int i = 0; i < kParameterCount; ++i) {
+    const double v = parameter_at(p, i);
+    const ParameterRange& r = kParameterRange[i];
+    const bool above_lo = r.lo_open ? v > r.lo : v >= r.lo;
+    const bool below_hi = r.hi_open ? v < r.hi : v <= r.hi;
+    if (!(above_lo && below_hi)) return fail(i, v, r.rule);
+  }
   if (!(p.phir <= p.phi0)) return fail(7, p.phir, "phir <= phi0");
-  if (!(p.m >= 0)) return fail(8, p.m, "m >= 0");
-  if (!(p.psi0 < 90)) return fail(9, p.psi0, "psi0 < 90 degrees");
-  if (!(p.psir >= 0)) return fail(10, p.psir, "psir >= 0 degrees");
   if (!(p.psir <= p.psi0)) return fail(10, p.psir, "psir <= psi0");
-  if (!(p.n >= 0)) return fail(11, p.n, "n >= 0");
-  if (!(p.bn >= 0)) return fail(12, p.bn, "bn >= 0");
-  if (!(p.bs >= 0)) return fail(13, p.bs, "bs >= 0");
   // Eq. 3 needs beta > alpha >= 0, i.e. c0^2 >= (ft0 tan phi)^2 for every
   // tan phi in [tan phir, tan phi0]; strictness keeps the hyperbola proper.
   if (!(p.c0 > p.ft0 * std::tan(p.phi0 * kDegree)))

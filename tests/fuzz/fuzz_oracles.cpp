@@ -6,6 +6,7 @@
 
 #include "fuzz_target.hpp"
 #include "mortar/integrator.hpp"
+#include "mortar/parameters.hpp"
 
 namespace mj_fuzz {
 namespace {
@@ -33,11 +34,14 @@ bool props_valid(const std::vector<Real>& props, int n_props) {
     p[i] = double(props[i]);
     if (!finite(p[i])) return false;
   }
-  const double kn = p[0], ks = p[1], ft0 = p[2], c0 = p[3], GIC = p[4], GIIC = p[5], phi0 = p[6], phir = p[7],
-               m = p[8], psi0 = p[9], psir = p[10], nn = p[11], bn = p[12], bs = p[13];
-  if (!(kn > 0 && ks > 0 && ft0 > 0 && c0 > 0 && GIC > 0 && GIIC > 0)) return false;
-  if (!(phi0 < 90 && phir > 0 && phir <= phi0 && m >= 0)) return false;
-  if (!(psi0 < 90 && psir >= 0 && psir <= psi0 && nn >= 0 && bn >= 0 && bs >= 0)) return false;
+  const double ft0 = p[2], c0 = p[3], phi0 = p[6], phir = p[7], psi0 = p[9], psir = p[10];
+  // Each parameter's own range is data of the law (kParameterRange); the
+  // rules between parameters are restated here.
+  for (int i = 0; i < mortar::kParameterCount; ++i) {
+    const mortar::ParameterRange& r = mortar::kParameterRange[size_t(i)];
+    if (!((r.lo_open ? p[i] > r.lo : p[i] >= r.lo) && (r.hi_open ? p[i] < r.hi : p[i] <= r.hi))) return false;
+  }
+  if (!(phir <= phi0 && psir <= psi0)) return false;
   if (!(c0 > ft0 * std::tan(phi0 * (3.14159265358979323846 / 180.0)))) return false;
   const double scheme = p[14], stol = p[15], ftol = p[16], max_sub = p[17], min_sub = p[18], sign = p[19];
   // Which schemes exist is the law's business (it grows): ask it, for whole

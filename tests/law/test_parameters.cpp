@@ -34,12 +34,17 @@ TEST_CASE("Parameters: each rule of docs/model.md 2 is enforced with name, value
     const char* rule_fragment;
   };
   const Case cases[] = {
-      {0, 0.0, "kn > 0"},          {1, -1.0, "ks > 0"},      {2, 0.0, "ft0 > 0"},
-      {3, -0.5, "c0 > 0"},         {4, 0.0, "GIC > 0"},      {5, -1e-3, "GIIC > 0"},
-      {6, 90.0, "phi0 < 90"},      {7, 0.0, "phir > 0"},     {7, 45.0, "phir <= phi0"},
-      {8, -1.0, "m >= 0"},         {9, 95.0, "psi0 < 90"},   {10, -1.0, "psir >= 0"},
-      {10, 30.0, "psir <= psi0"},  {11, -2.0, "n >= 0"},     {12, -0.1, "bn >= 0"},
-      {13, -0.1, "bs >= 0"},       {3, 0.5, "c0 > ft0*tan(phi0)"}, {2, NAN, "finite"},
+      {0, 0.0, "0.01 <= kn <= 1e6 N/mm^3"}, {1, -1.0, "ks <= 1e6"},  {2, 0.0, "1e-6 <= ft0"},
+      {3, -0.5, "1e-6 <= c0"},     {4, 0.0, "1e-9 <= GIC"},  {5, -1e-3, "GIIC <= 100 N/mm"},
+      {6, 90.0, "phi0 < 90"},      {7, 0.0, "0 < phir"},     {7, 45.0, "phir <= phi0"},
+      {8, -1.0, "0 <= m"},         {9, 95.0, "psi0 < 90"},   {10, -1.0, "0 <= psir"},
+      {10, 30.0, "psir <= psi0"},  {11, -2.0, "0 <= n"},     {12, -0.1, "0 <= bn"},
+      {13, -0.1, "0 <= bs"},       {3, 0.5, "c0 > ft0*tan(phi0)"}, {2, NAN, "finite"},
+      // Beyond the physical ranges (issue 39: kn = 1e300 was accepted).
+      {0, 1e300, "kn <= 1e6 N/mm^3"}, {1, 2e6, "ks <= 1e6"},   {2, 101.0, "ft0 <= 100 MPa"},
+      {3, 1e3, "c0 <= 100 MPa"},    {4, 1e-12, "1e-9 <= GIC"}, {5, 1e5, "GIIC <= 100"},
+      {8, 1e8, "m <= 1e7 mm/N"},    {11, 1e30, "n <= 1e7"},    {12, 1e4, "bn <= 1000"},
+      {13, 1001.0, "bs <= 1000"},
       {0, INFINITY, "finite"},
   };
   for (const Case& k : cases) {
@@ -58,6 +63,12 @@ TEST_CASE("Parameters: each rule of docs/model.md 2 is enforced with name, value
   p.phir = p.phi0;
   p.psir = p.psi0;
   p.m = p.n = p.bn = p.bs = 0;
+  CHECK(validate(p).ok());
+  p.kn = p.ks = 1e6;
+  p.GIC = 1e-9;
+  p.GIIC = 100;
+  p.m = p.n = 1e7;
+  p.bn = p.bs = 1000;
   CHECK(validate(p).ok());
 }
 

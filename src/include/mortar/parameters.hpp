@@ -9,20 +9,20 @@ namespace mortar {
 
 // Table 1 of the paper, in its order (= Abaqus props(1..14)). Units N, mm, MPa.
 struct Parameters {
-  double kn = 0;    // normal stiffness of the undamaged joint      [N/mm^3]  > 0
-  double ks = 0;    // shear stiffness (both tangents)               [N/mm^3]  > 0
-  double ft0 = 0;   // initial tensile strength                      [MPa]     > 0
-  double c0 = 0;    // initial cohesion                              [MPa]     > ft0*tan(phi0)
-  double GIC = 0;   // mode I fracture energy                        [N/mm]    > 0
-  double GIIC = 0;  // mode II fracture energy                       [N/mm]    > 0
+  double kn = 0;    // normal stiffness of the undamaged joint      [N/mm^3]  [0.01, 1e6]
+  double ks = 0;    // shear stiffness (both tangents)               [N/mm^3]  [0.01, 1e6]
+  double ft0 = 0;   // initial tensile strength                      [MPa]     [1e-6, 100]
+  double c0 = 0;    // initial cohesion                              [MPa]     [1e-6, 100], > ft0*tan(phi0)
+  double GIC = 0;   // mode I fracture energy                        [N/mm]    [1e-9, 100]
+  double GIIC = 0;  // mode II fracture energy                       [N/mm]    [1e-9, 100]
   double phi0 = 0;  // initial friction angle                        [deg]     phir <= phi0 < 90
   double phir = 0;  // residual friction angle                       [deg]     0 < phir
-  double m = 0;     // decay constant of the friction angle          [mm/N]    >= 0
+  double m = 0;     // decay constant of the friction angle          [mm/N]    [0, 1e7]
   double psi0 = 0;  // initial dilatancy angle                       [deg]     psir <= psi0 < 90
   double psir = 0;  // residual dilatancy angle                      [deg]     >= 0
-  double n = 0;     // decay constant of the dilatancy angle         [mm/N]    >= 0
-  double bn = 0;    // crack-to-plastic ratio, normal                [-]       >= 0
-  double bs = 0;    // crack-to-plastic ratio, shear                 [-]       >= 0
+  double n = 0;     // decay constant of the dilatancy angle         [mm/N]    [0, 1e7]
+  double bn = 0;    // crack-to-plastic ratio, normal                [-]       [0, 1000]
+  double bs = 0;    // crack-to-plastic ratio, shear                 [-]       [0, 1000]
 };
 
 inline constexpr int kParameterCount = 14;
@@ -34,6 +34,21 @@ struct ParameterInfo {
 };
 // Name, unit and meaning of each parameter, in Table 1 order.
 extern const std::array<ParameterInfo, kParameterCount> kParameterInfo;
+
+// The range of each parameter on its own, in Table 1 order (docs/model.md 2):
+// lo <= x <= hi, with lo excluded when lo_open and hi when hi_open. The
+// bounds are physical with room to spare (a mortar joint's stiffness is
+// 1-10^4 N/mm^3, its strengths 0.01-10 MPa, its fracture energies
+// 1e-4-1 N/mm); beyond them the input is a typo or a unit slip, and the
+// law's arithmetic (ft0/kn, c0^2/ft0, exp(-m w)) leaves its tested range.
+// The rules between parameters (phir <= phi0, psir <= psi0,
+// c0 > ft0*tan(phi0)) come after these in validate().
+struct ParameterRange {
+  double lo, hi;
+  bool lo_open, hi_open;
+  const char* rule;  // "0.01 <= kn <= 1e6 N/mm^3"
+};
+extern const std::array<ParameterRange, kParameterCount> kParameterRange;
 
 // Access by Table 1 position (0-based) so that props arrays and named files
 // share one mapping.
