@@ -114,7 +114,7 @@ TEST_CASE("invalid properties and controls are reported with name, value and rul
   const std::vector<Case> cases = {
       {3, 0.5, {"'c0' (props(4))", "= 0.5", "c0 > ft0*tan(phi0)"}},
       {0, -1.0, {"'kn' (props(1))", "0.01 <= kn <= 1e6 N/mm^3"}},
-      {0, 1e30, {"'kn' (props(1))", "= 1e+30", "kn <= 1e6 N/mm^3"}},
+      {0, 1e7, {"'kn' (props(1))", "= 10000000", "kn <= 1e6 N/mm^3"}},
       {7, 45.0, {"'phir' (props(8))", "phir <= phi0"}},
       {14, 4.0, {"props(15)", "scheme is 1"}},
       {15, 2.0, {"props(16)", "STOL"}},
