@@ -7,6 +7,10 @@
 //   calibration_study recovery      the recovery table (true, fitted, standard error, stage;
 //                                   misfit of one set and of m, n per sigma_n)
 //   calibration_study direct        the direct rules' errors over 20 seeds, 1 % and 3 % noise
+//   calibration_study coverage      the one set's standard errors against the spread of 20 noisy
+//                                   draws, with and without each shear curve's peak sample
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -108,6 +112,61 @@ void direct_study() {
               "a GIC the data cannot determine has no standard error (nan)\n");
 }
 
+// Without the sample at each shear curve's largest tau (a peak missed by the
+// test's sampling).
+std::vector<TestCurve> without_shear_peaks(std::vector<TestCurve> curves) {
+  for (TestCurve& c : curves) {
+    if (!c.shear()) continue;
+    const auto at = std::max_element(c.y.begin(), c.y.end()) - c.y.begin();
+    c.x.erase(c.x.begin() + at), c.y.erase(c.y.begin() + at);
+    if (c.has_uplift()) c.uplift.erase(c.uplift.begin() + at);
+  }
+  return curves;
+}
+
+// Are the reported standard errors honest? Over 20 draws of 2 % noise: the
+// spread of each estimate against the mean reported standard error, and how
+// often the truth lies within 2 standard errors (95 % if they are honest).
+void coverage_study() {
+  const Parameters truth = testing::van_der_pluijm(-0.5);
+  for (bool drop_peaks : {false, true}) {
+    constexpr int kDraws = 20;
+    std::vector<std::vector<double>> value(kParameterCount), error(kParameterCount);
+    int failed = 0;
+    for (std::uint32_t draw = 1; draw <= kDraws; ++draw) try {
+        std::vector<TestCurve> curves = curves_of(same(truth), 0.02, 30, 5000 + 10 * draw);
+        if (drop_peaks) curves = without_shear_peaks(curves);
+        const CalibrationRun r = calibrate_curves(curves, CalibrationSettings{});
+        for (int i = 0; i < kParameterCount; ++i) {
+          const CalibratedParameter& e = r.final.entries[size_t(i)];
+          if (e.stage == Stage::not_determined || !std::isfinite(e.std_error)) continue;
+          value[size_t(i)].push_back(e.value), error[size_t(i)].push_back(e.std_error);
+        }
+      } catch (const std::exception& e) {
+        ++failed;
+        std::printf("draw %u failed: %s\n", draw, e.what());
+      }
+    std::printf("\n### van der Pluijm (m, n of -0.5 MPa), 2 %% noise, %d draws, %s\n\n"
+                "| parameter | true | mean error | spread of the estimates | mean standard error | spread / "
+                "standard error | truth within 2 standard errors |\n|---|---|---|---|---|---|---|\n",
+                kDraws - failed, drop_peaks ? "each shear curve's peak sample removed" : "every sample");
+    for (int i = 0; i < kParameterCount; ++i) {
+      const std::vector<double>& v = value[size_t(i)];
+      if (v.size() < 2) continue;
+      const double t = parameter_at(truth, i);
+      double mean = 0, se = 0, within = 0;
+      for (size_t k = 0; k < v.size(); ++k) {
+        mean += v[k] / double(v.size()), se += error[size_t(i)][k] / double(v.size());
+        within += std::abs(v[k] - t) <= 2 * error[size_t(i)][k];
+      }
+      double var = 0;
+      for (double x : v) var += (x - mean) * (x - mean) / double(v.size() - 1);
+      std::printf("| %s | %.5g | %s | %.3g | %.3g | %.2f | %d of %zu |\n", kParameterInfo[size_t(i)].name, t,
+                  percent((mean - t) / t).c_str(), std::sqrt(var), se, std::sqrt(var) / se, int(within), v.size());
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,6 +200,10 @@ int main(int argc, char** argv) {
     direct_study();
     return 0;
   }
-  std::fprintf(stderr, "usage: calibration_study example DIR | recovery | direct\n");
+  if (argc == 2 && !std::strcmp(argv[1], "coverage")) {
+    coverage_study();
+    return 0;
+  }
+  std::fprintf(stderr, "usage: calibration_study example DIR | recovery | direct | coverage\n");
   return 2;
 }
