@@ -64,6 +64,11 @@ void write_two_block_deck(std::ostream& out, const std::vector<double>& props, D
   o.depvar = standard ? kStateCount : kFlaggedStateCount;
   write_surface_interaction(out, o);
 
+  if (standard) {
+    // Model data in Abaqus/Standard (history data only in Abaqus/Explicit).
+    out << "*CONTACT PAIR, INTERACTION=MORTAR\n";
+    for (const char* p : kPairs) out << p << "-LOWER-TOP, " << p << "-UPPER-BOTTOM\n";
+  }
   const double force = l.pressure * a * a;
   if (!standard) {
     const double t1 = l.explicit_time[0], t2 = t1 + l.explicit_time[1];
@@ -81,10 +86,7 @@ void write_two_block_deck(std::ostream& out, const std::vector<double>& props, D
       out << "\n*DYNAMIC, EXPLICIT\n, " << num(l.explicit_time[step]) << "\n";
     }
     if (step == 0) {
-      if (standard) {
-        out << "*CONTACT PAIR, INTERACTION=MORTAR\n";
-        for (const char* p : kPairs) out << p << "-LOWER-TOP, " << p << "-UPPER-BOTTOM\n";
-      } else {
+      if (!standard) {
         out << "*CONTACT\n*CONTACT INCLUSIONS\n";
         for (const char* p : kPairs) out << p << "-LOWER-TOP, " << p << "-UPPER-BOTTOM\n";
         out << "*CONTACT PROPERTY ASSIGNMENT\n";
