@@ -30,6 +30,7 @@ struct BenchOptions {
   double budget_seconds = 60;       // wall time allowed for one run of one point along one path
   bool plots = true;
   bool quiet = false;
+  bool wide = false;  // the summary on stdout as summary.md has it, not fitted to 100 columns
 };
 
 enum class Outcome { accurate, inaccurate, drifted, failed, non_finite };

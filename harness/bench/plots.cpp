@@ -44,7 +44,7 @@ const char* outcome_colour(Outcome o) {
     case Outcome::accurate: return "#009E73";
     case Outcome::inaccurate: return "#F0E442";
     case Outcome::drifted: return "#E69F00";
-    case Outcome::failed: return "#D55E00";
+    case Outcome::failed: return "#CC79A7";
     case Outcome::non_finite: return "#000000";
   }
   return "#FFFFFF";
@@ -86,6 +86,19 @@ void add_point(Line& line, const BenchResult& r, const BenchRow& row, bool whole
   if (row.timing.repeats == 0 || !std::isfinite(row.error_traction)) return;
   line.points.push_back({cost_of(row, whole_path), std::max(row.error_traction, 1e-16),
                          double(point_type(h_index(r, row.h)))});
+}
+
+// The error axis: the decades the plotted errors and the target lines span.
+std::string error_yrange(const BenchResult& r, const std::vector<std::string>& paths) {
+  double lo = kAccurateError, hi = kTargetError;
+  for (const BenchRow& row : r.rows)
+    if (row.timing.repeats > 0 && std::isfinite(row.error_traction) &&
+        std::find(paths.begin(), paths.end(), row.path) != paths.end()) {
+      lo = std::min(lo, std::max(row.error_traction, 1e-16));
+      hi = std::max(hi, row.error_traction);
+    }
+  return "set yrange [" + e_format(std::pow(10.0, std::floor(std::log10(lo)))) + ":" +
+         e_format(std::pow(10.0, std::ceil(std::log10(hi)))) + "]\n";
 }
 
 std::string stol_range(const BenchResult& r) {
@@ -179,14 +192,15 @@ std::string write_focus_chart(const std::string& out_dir, const BenchResult& r) 
   const std::string title = r.path_titles[(it == r.paths.end() ? r.paths.begin() : it) - r.paths.begin()];
   for (int t = 0; t < 2; ++t) {
     int block = 0;
-    g << "\nset terminal " << terminal(t, 1500, 800) << "\nset output \"work_precision." << kTerminals[t][1]
+    g << "\nset terminal " << terminal(t, 1700, 800) << "\nset output \"work_precision." << kTerminals[t][1]
       << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset format x \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
-      << "set yrange [1e-11:1e4]  # headroom above the errors for the key\n"
+      << error_yrange(r, {path})
       << "set multiplot layout 1,2 title " << quoted("Work-precision: " + title + " (path " + plain(path) + ")")
-      << " font \",13\"\n";
+      << " font \",13\" margins 0.06,0.70,0.1,0.88 spacing 0.07\n";
     write_panel(g, r, path, "error against cost per point-update", false, "", block);
-    write_panel(g, r, path, "error against cost for the whole path", true, "inside top right font \",9\" box opaque",
-                block);
+    // The key beside the panels, where it covers no point.
+    write_panel(g, r, path, "error against cost for the whole path", true,
+                "at screen 0.715,0.88 left top Left reverse font \",9\" box", block);
     g << "unset multiplot\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");
@@ -196,17 +210,21 @@ std::string write_focus_chart(const std::string& out_dir, const BenchResult& r) 
 std::string write_all_paths_chart(const std::string& out_dir, const BenchResult& r) {
   const std::string name = "work_precision_all.gp";
   std::ofstream g = open_script(out_dir, name);
-  const int columns = 3, rows = static_cast<int>((r.paths.size() + columns - 1) / columns);
+  // One cell more than the paths: the key goes into the first free one.
+  const int columns = 3, rows = static_cast<int>((r.paths.size() + columns) / columns);
+  const int free_row = static_cast<int>(r.paths.size()) / columns, free_column = static_cast<int>(r.paths.size()) % columns;
+  std::ostringstream key;
+  key << "at screen " << (free_column + 0.12) / columns << "," << 0.95 * (rows - free_row) / rows - 0.02
+      << " left top font \",10\" box opaque";
   for (int t = 0; t < 2; ++t) {
     int block = 0;
     g << "\nset terminal " << terminal(t, 1800, 480 * rows) << "\nset output \"work_precision_all."
       << kTerminals[t][1] << "\"\nset logscale xy\nset format y \"10^{%L}\"\nset format x \"10^{%L}\"\nset grid lc rgb \"#c8c8c8\"\n"
-      << "set yrange [1e-11:1e4]  # headroom above the errors for the key\n"
-      << "set multiplot layout " << rows << "," << columns
+      << error_yrange(r, r.paths) << "set multiplot layout " << rows << "," << columns
       << " title \"Work-precision on every bench path: traction error against cost per point-update\" font "
          "\",13\"\n";
     for (size_t p = 0; p < r.paths.size(); ++p)
-      write_panel(g, r, r.paths[p], plain(r.paths[p]), false, p == 0 ? "top right font \",8\" box opaque" : "", block);
+      write_panel(g, r, r.paths[p], plain(r.paths[p]), false, p == 0 ? key.str() : "", block);
     g << "unset multiplot\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");
@@ -232,6 +250,16 @@ std::string write_stability_map(const std::string& out_dir, const BenchResult& r
       << std::string(outcome_colour(row.outcome) + 1) << " " << quoted(text) << "\n";
   }
   g << "EOD\n";
+  // Drifted and failed cells also carry a marker of their own shape.
+  for (const auto& [block, outcome] : {std::pair<const char*, Outcome>{"$drifted", Outcome::drifted},
+                                       {"$failed", Outcome::failed}}) {
+    g << block << " << EOD\n";
+    for (const BenchRow& row : r.rows)
+      if (row.outcome == outcome)
+        g << column_of(std::find(r.paths.begin(), r.paths.end(), row.path) - r.paths.begin(), h_index(r, row.h)) << " "
+          << row_of(row.scheme) << "\n";
+    g << "0 -100\nEOD\n";  // (off the map: an empty block would stop gnuplot)
+  }
   const double width = double(r.paths.size() * (nh + 1)) - 1;
   std::ostringstream xtics, ytics;
   for (size_t p = 0; p < r.paths.size(); ++p)
@@ -253,11 +281,14 @@ std::string write_stability_map(const std::string& out_dir, const BenchResult& r
         << r.schemes.size() - 0.2 << " center font \",9\"\n";
     g << "set key outside bottom center horizontal font \",10\"\n"
       << "plot $cells using 1:2:(0.48):(0.48):3 with boxxy fs solid 1.0 border lc rgb \"#ffffff\" lc rgb variable "
-         "notitle, \\\n     $cells using 1:2:4 with labels font \",6.5\" notitle";
+         "notitle, \\\n     $cells using 1:2:4 with labels font \",6.5\" notitle, \\\n"
+         "     $drifted using ($1-0.3):($2+0.27) with points pt 2 ps 0.8 lw 1.5 lc rgb \"#000000\" notitle, \\\n"
+         "     $failed using ($1-0.3):($2+0.27) with points pt 6 ps 0.8 lw 1.5 lc rgb \"#000000\" notitle";
     for (Outcome o : {Outcome::accurate, Outcome::inaccurate, Outcome::drifted, Outcome::failed,
                       Outcome::non_finite})
       g << ", \\\n     keyentry with boxes fs solid 1.0 lc rgb " << quoted(outcome_colour(o)) << " title "
-        << quoted(outcome_name(o));
+        << quoted(std::string(outcome_name(o)) +
+                  (o == Outcome::drifted ? " (marked x)" : o == Outcome::failed ? " (marked o)" : ""));
     g << "\nset output\n";
   }
   if (!g) throw InputError(out_dir + "/" + name + ": write failed");

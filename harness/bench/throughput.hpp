@@ -22,6 +22,7 @@ struct ThroughputOptions {
   bool quick = false;    // tiny sizes: checks that it runs, measures nothing
   int repeats = 11;      // timed repeats per case; medians are reported
   bool quiet = false;    // no progress on stderr
+  bool wide = false;     // the table not fitted to 100 columns
 };
 
 // What each case times, per point and increment.

@@ -7,6 +7,7 @@
 #include "bench/plots.hpp"
 #include "bench/report.hpp"
 #include "output/plots.hpp"
+#include "output/terminal_text.hpp"
 #include "validation/checks.hpp"
 
 namespace mortar::harness {
@@ -19,7 +20,7 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
   write_text(dir + "/stability.md", stability_list(r));
   const std::string summary = bench_summary(r);
   write_text(dir + "/summary.md", summary);
-  out << summary;
+  out << terminal_text(summary, options.wide);
   if (options.plots) {
     if (!gnuplot_available()) {
       err << "bench: gnuplot is not on the PATH: wrote the chart scripts only\n";
@@ -34,8 +35,9 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
       }
     }
   }
-  out << "bench: wrote " << dir << "/bench.csv, reference.csv, stability.md, summary.md"
-      << (options.plots ? ", work_precision{,_all}.{png,svg}, stability_map.{png,svg}" : "") << "\n";
+  const std::string wrote = "bench: wrote " + dir + "/bench.csv, reference.csv, stability.md, summary.md" +
+                            (options.plots ? ", work_precision{,_all}.{png,svg}, stability_map.{png,svg}" : "") + "\n";
+  out << terminal_text(wrote, options.wide);
   const ReferenceSpread spread = reference_spread(r);
   if (!(spread.traction < kReferenceRequired && spread.energy < kReferenceRequired)) {
     err << "masonry-joint bench: the reference moved by " << format_number(std::max(spread.traction, spread.energy), 2)
@@ -48,7 +50,7 @@ int run_bench_command(const BenchOptions& options, std::ostream& out, std::ostre
 
 int run_throughput_command(const ThroughputOptions& options, std::ostream& out, std::ostream& err) {
   try {
-    out << throughput_report(run_throughput(options, err));
+    out << terminal_text(throughput_report(run_throughput(options, err)), options.wide);
   } catch (const std::runtime_error& e) {
     err << "masonry-joint " << e.what() << "\n";
     return 1;

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <ostream>
+#include <sstream>
 #include <system_error>
 
 #include "calibration/pipeline.hpp"
@@ -10,6 +11,7 @@
 #include "input/parameter_file.hpp"
 #include "output/output_paths.hpp"
 #include "output/plots.hpp"
+#include "output/terminal_text.hpp"
 
 namespace fs = std::filesystem;
 
@@ -81,7 +83,9 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
              "Values, standard errors and how each was set: report.md"},
             run.one_set_verdict);
   write_fit_curves(o.out_dir, curves, run.one_set, run.direct.calibration.values(), settings.fit.simulation);
-  write_report(out, o.out_dir, report);
+  std::ostringstream md;
+  write_report(md, o.out_dir, report);
+  out << terminal_text(md.str(), o.wide);
   if (o.plots) draw(o.out_dir, curves, report, err);
   for (const std::string& line : run.outliers) err << "calibrate: warning: " << line << "\n";
   // The one set decides, unless the sets per sigma_n were asked for and pass.

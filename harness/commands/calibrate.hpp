@@ -16,6 +16,7 @@ struct CalibrateOptions {
   int increments = 100;             // simulation increments per curve
   bool plots = true;
   bool quiet = false;
+  bool wide = false;  // the report on stdout as report.md has it, not fitted to 100 columns
 };
 
 // Exit status of a calibration whose set is rejected (calibration/acceptance.hpp):

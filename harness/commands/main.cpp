@@ -29,6 +29,7 @@ namespace {
 
 constexpr int kExitChecksFailed = 1;  // a check failed or a run could not be completed
 constexpr int kExitBadInput = 2;      // bad arguments or input files
+constexpr const char* kWideHelp = "Tables in full on stdout, wider than 100 columns (the files always have them so)";
 
 }  // namespace
 
@@ -79,6 +80,7 @@ int main(int argc, char** argv) {
   val_cmd->add_flag("--write-references", val.write_references,
                     "Store the fresh curves as regression baselines (only for cases whose checks all pass)");
   val_cmd->add_flag("--quiet,-q", val.quiet, "No progress on stderr");
+  val_cmd->add_flag("--wide", val.wide, kWideHelp);
 
   InpArgs inp;
   CLI::App* inp_cmd = app.add_subcommand(
@@ -106,6 +108,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   bench_cmd->add_flag("--no-plots", bench_no_plots, "Skip the charts");
   bench_cmd->add_flag("--quiet,-q", bench.quiet, "No progress on stderr");
+  bench_cmd->add_flag("--wide", bench.wide, kWideHelp);
   bool throughput = false;
   ThroughputOptions throughput_options;
   bench_cmd->add_flag("--throughput", throughput,
@@ -137,6 +140,7 @@ int main(int argc, char** argv) {
   cal_cmd->add_option("--increments", cal.increments, "Simulation increments per curve")->capture_default_str();
   cal_cmd->add_flag("--no-plots", cal_no_plots, "Skip the charts");
   cal_cmd->add_flag("--quiet,-q", cal.quiet, "No progress on stderr");
+  cal_cmd->add_flag("--wide", cal.wide, kWideHelp);
 
   std::vector<std::string> subcommands;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
@@ -174,6 +178,7 @@ int main(int argc, char** argv) {
       throughput_options.data_dir = bench.data_dir;
       throughput_options.quick = bench.quick;
       throughput_options.quiet = bench.quiet;
+      throughput_options.wide = bench.wide;
       return run_throughput_command(throughput_options, std::cout, std::cerr);
     }
     if (*bench_cmd) {

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 
 #include "input/input_error.hpp"
 #include "input/scene_file.hpp"
@@ -12,6 +13,7 @@
 #include "output/progress.hpp"
 #include "output/scene_csv.hpp"
 #include "output/scene_plots.hpp"
+#include "output/terminal_text.hpp"
 #include "scenes/wall.hpp"
 #include "solvers/block_solver.hpp"
 
@@ -71,8 +73,10 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
     if (!f) throw InputError(cannot_write(args.out + "/summary.txt"));
     f << summary;
   }
-  out << summary << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv ("
-      << snaps.size() << " snapshots, displacements x " << mag << ")\n";
+  std::ostringstream wrote;
+  wrote << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv (" << snaps.size()
+        << " snapshots, displacements x " << mag << ")\n";
+  out << fit_to_width(summary + wrote.str());
   if (!args.plots) return 0;
   std::vector<std::string> labels;
   for (const WallSnapshot& s : snaps) labels.push_back(s.label);
@@ -86,7 +90,8 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
     err << "scene: gnuplot failed on " << script << ":\n" << message;
     return 1;
   }
-  out << "scene: drew base_shear, energy and wall_0.." << snaps.size() - 1 << " (.png, .svg) with " << script << "\n";
+  out << fit_to_width("scene: drew base_shear, energy and wall_0.." + std::to_string(snaps.size() - 1) +
+                      " (.png, .svg) with " + script + "\n");
   return 0;
 }
 

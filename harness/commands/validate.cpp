@@ -15,6 +15,7 @@
 #include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
+#include "output/terminal_text.hpp"
 #include "solvers/explicit_run.hpp"
 #include "validation/calibration_data.hpp"
 #include "validation/checks.hpp"
@@ -143,6 +144,35 @@ void print_table(std::ostream& out, const std::vector<CaseOutcome>& cases) {
   out << rule << "\n";
 }
 
+// The table within 100 columns: the case on its rule line, then per check
+// its value, result and error, and on a second line what it was held to
+// (and an error too long for its column).
+void print_narrow_table(std::ostream& out, const std::vector<CaseOutcome>& cases) {
+  size_t check = 5, value = 5;
+  for (const CaseOutcome& c : cases)
+    for (const CheckRow& r : c.rows) check = std::max(check, r.quantity.size()), value = std::max(value, r.value.size());
+  auto cell = [](const std::string& s, size_t w) { return s + std::string(w - std::min(w, s.size()) + 2, ' '); };
+  const size_t error = kTerminalColumns - std::min(kTerminalColumns - 8, check + value + 12);
+  out << cell("check", check) << cell("value", value) << "result  error\n"
+      << "    expected, limit (and an error too long for its column)\n";
+  for (const CaseOutcome& c : cases) {
+    out << "-- " << c.name << " " << std::string(kTerminalColumns - std::min(kTerminalColumns - 8, c.name.size() + 4), '-')
+        << "\n";
+    for (const CheckRow& r : c.rows) {
+      const char* verdict = r.verdict == Verdict::pass ? "pass" : r.verdict == Verdict::fail ? "FAIL" : "info";
+      const bool error_fits = r.error.size() <= error;
+      std::string line = cell(r.quantity, check) + cell(r.value, value) + verdict + "    " + (error_fits ? r.error : "");
+      out << line.substr(0, line.find_last_not_of(' ') + 1) << "\n";
+      std::string second;
+      for (const auto& [label, text] : {std::pair<const char*, std::string>{"expected ", r.expected},
+                                        {"limit ", r.limit}, {"error ", error_fits ? "" : r.error}})
+        if (!text.empty()) second += (second.empty() ? "" : "; ") + (label + text);
+      if (!second.empty()) out << "    " << second << "\n";
+    }
+  }
+  out << std::string(kTerminalColumns, '-') << "\n";
+}
+
 }  // namespace
 
 int run_validation(const ValidateOptions& o, std::ostream& out, std::ostream& err) {
@@ -184,16 +214,21 @@ int run_validation(const ValidateOptions& o, std::ostream& out, std::ostream& er
       checks += r.verdict != Verdict::info;
       failures += r.verdict == Verdict::fail;
     }
-  table << outcomes.size() << " cases, " << checks << " checks: " << checks - failures << " passed, " << failures
-        << " failed\n";
-  out << table.str();
+  const std::string verdict = std::to_string(outcomes.size()) + " cases, " + std::to_string(checks) + " checks: " +
+                              std::to_string(checks - failures) + " passed, " + std::to_string(failures) + " failed\n";
+  table << verdict;
+  if (o.wide) {
+    out << table.str();
+  } else {
+    print_narrow_table(out, outcomes);
+    out << verdict;
+  }
   std::ofstream(o.out_dir + "/validation.txt") << table.str();
   if (!o.quiet) {
-    err << "validate: CSVs, table (validation.txt)";
-    if (!charts.empty()) err << " and charts";
-    err << " in " << o.out_dir << "/";
-    for (const std::string& c : charts) err << " " << c;
-    err << "\n";
+    std::string wrote = "validate: CSVs, table (validation.txt)" + std::string(charts.empty() ? "" : " and charts") +
+                        " in " + o.out_dir + "/";
+    for (const std::string& c : charts) wrote += " " + c;
+    err << terminal_text(wrote + "\n", o.wide);
   }
   return failures == 0 ? 0 : 1;
 }

@@ -15,6 +15,7 @@ struct ValidateOptions {
   std::vector<std::string> series;     // only these series (folder names); all when empty
   double traction_tolerance = 1e-9;    // MPa, of the mixed control
   bool quiet = false;
+  bool wide = false;  // the table as validation.txt has it, not fitted to 100 columns
   bool plots = true;
   bool write_references = false;  // store fresh curves as baselines (only where every check passes)
 };

@@ -121,7 +121,7 @@ std::string write_plot_script(const std::string& out_dir, const SeriesSpec& seri
                  {"svg size 1100,1000 enhanced font \"DejaVu Sans,12\" background \"white\"", "svg"}};
   for (const auto& o : outputs) {
     g << "\nset terminal " << o.terminal << "\nset output " << quoted(series.id + "." + o.extension) << "\n"
-      << "set grid lc rgb \"#c8c8c8\"\nset border lw 1.2\nset offsets 0, 0, graph 0.05, graph 0.05\n"
+      << "set grid lc rgb \"#c8c8c8\"\nset border lw 1.2\nset offsets graph 0.03, graph 0.03, graph 0.05, graph 0.05\n"
       << "set multiplot layout " << panels.size() << ",1 title " << quoted(series.title) << " font \",14\"\n";
     for (const Panel& p : panels) write_panel(g, p, cases);
     g << "unset multiplot\nset output\n";
