@@ -105,9 +105,7 @@ ValidationError validate(const Parameters& p) {
   for (int i = 0; i < kParameterCount; ++i) {
     const double v = parameter_at(p, i);
     const ParameterRange& r = kParameterRange[i];
-    const bool above_lo = r.lo_open ? v > r.lo : v >= r.lo;
-    const bool below_hi = r.hi_open ? v < r.hi : v <= r.hi;
-    if (!(above_lo && below_hi)) return fail(i, v, r.rule);
+    if (!r.holds(v)) return fail(i, v, r.rule);
   }
   if (!(p.phir <= p.phi0)) return fail(7, p.phir, "phir <= phi0");
   if (!(p.psir <= p.psi0)) return fail(10, p.psir, "psir <= psi0");

@@ -37,10 +37,8 @@ bool props_valid(const std::vector<Real>& props, int n_props) {
   const double ft0 = p[2], c0 = p[3], phi0 = p[6], phir = p[7], psi0 = p[9], psir = p[10];
   // Each parameter's own range is data of the law (kParameterRange); the
   // rules between parameters are restated here.
-  for (int i = 0; i < mortar::kParameterCount; ++i) {
-    const mortar::ParameterRange& r = mortar::kParameterRange[size_t(i)];
-    if (!((r.lo_open ? p[i] > r.lo : p[i] >= r.lo) && (r.hi_open ? p[i] < r.hi : p[i] <= r.hi))) return false;
-  }
+  for (int i = 0; i < mortar::kParameterCount; ++i)
+    if (!mortar::kParameterRange[size_t(i)].holds(p[i])) return false;
   if (!(phir <= phi0 && psir <= psi0)) return false;
   if (!(c0 > ft0 * std::tan(phi0 * (3.14159265358979323846 / 180.0)))) return false;
   const double scheme = p[14], stol = p[15], ftol = p[16], max_sub = p[17], min_sub = p[18], sign = p[19];

@@ -47,6 +47,9 @@ struct ParameterRange {
   double lo, hi;
   bool lo_open, hi_open;
   const char* rule;  // "0.01 <= kn <= 1e6 N/mm^3"
+
+  // Whether v lies in the range (false for NaN).
+  bool holds(double v) const { return (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi); }
 };
 extern const std::array<ParameterRange, kParameterCount> kParameterRange;
 
