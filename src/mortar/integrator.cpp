@@ -151,7 +151,7 @@ void attempt(const Model& M, State& state, const Vec3& d, Mat3* tangent, Increme
       return integrate_with(M, state, d, tangent, scheme, res, tracker);
     }
     case Scheme::implicit: {
-      BackwardEuler scheme(M, res.status, tracker);
+      BackwardEuler scheme(M, res.status, tracker, true);
       return integrate_with(M, state, d, tangent, scheme, res, tracker);
     }
     case Scheme::modified_euler:

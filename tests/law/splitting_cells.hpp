@@ -77,11 +77,16 @@ struct Measured {
   // The most substeps one call took (Run::worst_work): over the tight runs,
   // the reference included, and over the default runs.
   long tight_work = 0, default_work = 0;
+  // The implicit scheme (docs/model.md 7.5) at the default controls, 1 call
+  // per increment, against the same reference (measured on request).
+  double implicit = -1;
+  long implicit_failures = 0, implicit_work = 0;
   bool any_failure() const { return reference_failures + tight_failures + default_failures > 0; }
 };
 
 inline Measured measure(const std::string& family, const NamedSet& ns, const Cell& c,
-                        const std::vector<int>& tight_calls = {1, 20}, const std::vector<int>& default_calls = {1}) {
+                        const std::vector<int>& tight_calls = {1, 20}, const std::vector<int>& default_calls = {1},
+                        bool implicit = false) {
   const Path w = path_of(family, ns.p, seed_of(ns.name), c.reach);
   const mortar::Model Mt = mortar::make_model(ns.p, tight()), Md = mortar::make_model(ns.p, mortar::Controls{});
   const Run ref = drive(Mt, w, c.h, kReferenceCalls);
@@ -103,6 +108,14 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
     m.default_work = std::max(m.default_work, r.worst_work);
     m.default_by_calls.push_back(worst(r.traction, ref.traction, m.peak));
     m.defaults = std::max(m.defaults, m.default_by_calls.back());
+  }
+  if (implicit) {
+    mortar::Controls ci;
+    ci.scheme = mortar::Scheme::implicit;
+    const Run r = drive(mortar::make_model(ns.p, ci), w, c.h, 1);
+    m.implicit_failures = r.failures;
+    m.implicit_work = r.worst_work;
+    m.implicit = worst(r.traction, ref.traction, m.peak);
   }
   return m;
 }

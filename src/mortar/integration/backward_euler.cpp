@@ -85,28 +85,36 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
   if ((!on_surface && yield_function(sigma_e, S) <= yield_tolerance(M, sigma_e)) || !(f0.dF.dot(f0.k_A_m) > 0))
     return elastic();
   out.plastic = true;
-  // The branch logic is that of the explicit stage(): on the damage-growing
-  // branch first; a trial inside the surface there is unloading, and the
-  // step is elastic on the secant (damage frozen); where the growing
-  // solution would make the secant damage decrease, the frozen branch for
-  // that component, unless it has no plastic solution.
-  const Outcome grow = solve_on_branches(M, P, S, dd, true, true, out, st);
-  if (grow == Outcome::unloading) return elastic();
-  if (grow == Outcome::failed) return out;  // the caller halves the step
-  if (P.y.open) {
+  // The branch logic is that of the explicit stage() (docs/model.md 7.5): a
+  // slip against the elastic slip starts on its frozen branch (the growing
+  // one where that has no solution); a trial inside the surface is unloading,
+  // elastic on the secant; a component whose secant damage the solution
+  // would decrease is re-solved frozen (at most two passes), unless that has
+  // no solution, or unloads although the secant loads: the more growing
+  // branch then stands (settle keeps the damage from decreasing).
+  const bool freeze_slip = P.y.open && slip_reverses(P.y, dd);
+  bool grow_n = true, grow_s = !freeze_slip;
+  Outcome o = solve_on_branches(M, P, S, dd, grow_n, grow_s, out, st);
+  if (o == Outcome::failed && freeze_slip) {
+    grow_s = true;
+    o = solve_on_branches(M, P, S, dd, grow_n, grow_s, out, st);
+  }
+  if (o == Outcome::unloading) return elastic();
+  if (o == Outcome::failed) return out;  // the caller halves the step
+  for (int pass = 0; P.y.open && pass < 2; ++pass) {
     // Decided with the end-point plastic increment; exact for a finite step:
     // d_old (dd - dp) <= b dp is the secant damage at the end not decreasing.
     const Vec3 dp = out.solution.unknowns().dl * out.end.m;
-    const bool keep_n = damage_grows_normal(M, P.y, dd, dp);
-    const bool keep_s = damage_grows_shear(M, P.y, dd, dp);
-    if (!(keep_n && keep_s)) {
-      BackwardEulerStep frozen = out;
-      const Outcome f = solve_on_branches(M, P, S, dd, keep_n, keep_s, frozen, st);
-      if (f == Outcome::unloading) return elastic();
-      // No plastic solution on the frozen branch: the growing branch stands
-      // and settle() keeps the damage from decreasing.
-      if (f == Outcome::plastic) out = frozen;
-    }
+    const bool keep_n = grow_n && damage_grows_normal(M, P.y, dd, dp);
+    const bool keep_s = grow_s && damage_grows_shear(M, P.y, dd, dp);
+    if (keep_n == grow_n && keep_s == grow_s) break;
+    BackwardEulerStep frozen = out;
+    const Outcome f = solve_on_branches(M, P, S, dd, keep_n, keep_s, frozen, st);
+    if (f == Outcome::failed || (f == Outcome::unloading && f0.dF.dot(sigma_e - P.sigma) > 0)) break;
+    if (f == Outcome::unloading) return elastic();
+    out = frozen;
+    grow_n = keep_n;
+    grow_s = keep_s;
   }
   const LocalUnknowns x = out.solution.unknowns();
   end_plastic_step(M, P, out.N, x.sigma, x.dl * out.end.m, x.kappa);

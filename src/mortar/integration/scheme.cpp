@@ -30,6 +30,13 @@ Attempt retry_with(double size) {
 }
 double halved(double floor, double dT) { return std::max(0.5 * dT, floor); }
 
+// The implicit scheme keeps backward Euler's end point, whose local error is
+// the estimate itself (modified Euler keeps the Heun point, one order better
+// than its estimate): it holds the estimate to this share of STOL
+// (docs/model.md 7.5, Decision - error control of the implicit scheme).
+constexpr double kImplicitStolShare = 0.1;
+double implicit_tolerance(const Model& M) { return kImplicitStolShare * M.controls.stol; }
+
 // The end of the first stage: P + r1 over dd.
 Point first_stage_end(const Point& P, const Vec3& dd, const Rates& r1) {
   Point A = P;
@@ -73,7 +80,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
     add(end_, r2, 0.5);
     end_.y.separation += dd;
     shape_into(M_, end_.y.wI, end_.y.wII, end_.y.wIII, end_surface_);
-    error_ = local_error(P, r1, r2, end_, end_surface_);
+    error_ = local_error(M_, P, r1, r2, end_, end_surface_);
   }
   if (error_ > c.stol && dT > floor_) {
     last_rejected_ = true;
@@ -127,8 +134,9 @@ double ModifiedEuler::next_size(double dT) {
 // 2001, Eq. for R_n+1), over the traction, the softening factor (relative)
 // and the wear exponent; the traction norm is floored at 1e-3 ft0 so that
 // states near zero traction do not force endless subdivision.
-double ModifiedEuler::local_error(const Point& P, const Rates& r1, const Rates& r2, const Point& N,
-                                  const Surface& S) const {
+// The implicit scheme passes its step's increments as r2 (docs/model.md 7.5).
+double local_error(const Model& M_, const Point& P, const Rates& r1, const Rates& r2, const Point& N,
+                   const Surface& S) {
   const double floor = 1e-3 * M_.stress_scale;
   const double e_sigma = 0.5 * (r2.dsigma - r1.dsigma).norm() / std::max(N.sigma.norm(), floor);
   // The softening factor relative to what is left of it (docs/model.md 7.1):
@@ -157,13 +165,20 @@ Failure BackwardEuler::budget_spent(const IntegrationStatus& st) const {
 
 // The whole plastic part first; a step whose Newton iteration fails is halved
 // (down to the minimum substep, then Failure::local_solve_failed).
-Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates&) {
+Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
   step_ = backward_euler(M_, P, dd, st_);
   if (!step_.ok && !P.y.open && P.sigma[0] + M_.p.kn * dd[0] > 0) {
     // No closed-regime solution and a tensile trial: the step may cross into
     // the open regime where no closed point exists; end it on the boundary.
     boundary_ = backward_euler_to_boundary(M_, P, dd, st_);
     if (boundary_.ok) {
+      // The step to the boundary covers theta dd: its error is against the
+      // forward-Euler stage over theta dd, theta r1 (one stage is linear in
+      // its separation increment).
+      if (error_control_ && dT > floor_ && step_error(P, boundary_.N, r1, boundary_.theta) > implicit_tolerance(M_)) {
+        last_rejected_ = true;
+        return retry_with(halved(floor_, dT));
+      }
       Attempt a{Attempt::on_boundary, &boundary_.N};
       a.theta = boundary_.theta;
       return a;
@@ -171,12 +186,48 @@ Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
   }
   if (step_.ok) {
     end_ = step_.N;
-    return step_to(end_);
+    if (!error_control_) return step_to(end_);
+    // The step's increments against the forward-Euler stage: the difference
+    // is twice backward Euler's local error to leading order (docs/model.md 7.5).
+    error_ = step_error(P, end_, r1, 1.0);
+    if (error_ > implicit_tolerance(M_) && dT > floor_) {
+      last_rejected_ = true;
+      return retry_with(halved(floor_, dT));
+    }
+    if (error_ > implicit_tolerance(M_)) st_.min_substep_hit = true;
+    Attempt a = step_to(end_);
+    a.surface = &end_surface_;
+    return a;
   }
   if (dT > M_.controls.min_substep) return retry_with(halved(M_.controls.min_substep, dT));
   Attempt a{Attempt::fail};
   a.failure = Failure::local_solve_failed;
   return a;
+}
+
+// Without error control the step doubles. With it the sizes stay halvings
+// and doublings of the plastic part (docs/model.md 7.5): the step doubles when
+// its error, second order in the step, would stay within the tolerance.
+double BackwardEuler::next_size(double dT) {
+  const bool grow = !error_control_ || (!last_rejected_ && 4 * error_ <= implicit_tolerance(M_));
+  last_rejected_ = false;
+  return grow ? 2 * dT : dT;
+}
+
+// local_error of a step from P to N (before settle) against the forward-Euler
+// stage r1 scaled by the part of the substep the step covers.
+double BackwardEuler::step_error(const Point& P, const Point& N, const Rates& r1, double part) {
+  Rates fe, be;
+  fe.dsigma = part * r1.dsigma;
+  fe.dwI = part * r1.dwI;
+  fe.dwII = part * r1.dwII;
+  fe.dwIII = part * r1.dwIII;
+  be.dsigma = N.sigma - P.sigma;
+  be.dwI = N.y.wI - P.y.wI;
+  be.dwII = N.y.wII - P.y.wII;
+  be.dwIII = N.y.wIII - P.y.wIII;
+  shape_into(M_, N.y.wI, N.y.wII, N.y.wIII, end_surface_);
+  return local_error(M_, P, fe, be, N, end_surface_);
 }
 
 void BackwardEuler::before_settle(const Point& Q) {

@@ -109,7 +109,7 @@ class ModifiedEuler final : public SubstepScheme {
   double next_size(double dT) override;
 
  private:
-  double local_error(const Point& P, const Rates& r1, const Rates& r2, const Point& N, const Surface& S) const;
+  double step_error(const Point& P, const Point& N, const Rates& r1, double part);
   const Model& M_;
   IntegrationStatus& st_;
   Point end_;
@@ -124,23 +124,38 @@ class ModifiedEuler final : public SubstepScheme {
   bool last_rejected_ = false;
 };
 
+// The local error of a substep (docs/model.md 7.1, 7.5): half the difference
+// of two estimates of its increments, r2 against the forward-Euler stage r1,
+// over the traction, the softening factor (relative) and the wear exponent.
+double local_error(const Model& M, const Point& P, const Rates& r1, const Rates& r2, const Point& N,
+                   const Surface& S);
+
 // Backward-Euler steps (return mapping), halved on a failed local solve, with
 // the consistent tangent carried through every accepted step on request.
+// With error control (scheme 3, docs/model.md 7.5) a step whose end differs
+// from the forward-Euler stage by more than STOL (local_error) is cut; the
+// apex zone's steps (substepper.hpp) take none.
 class BackwardEuler final : public SubstepScheme {
  public:
-  BackwardEuler(const Model& M, IntegrationStatus& st, TangentTracker& tangent)
-      : SubstepScheme(SchemeTraits{false, true, true}), M_(M), st_(st), tangent_(tangent) {}
+  BackwardEuler(const Model& M, IntegrationStatus& st, TangentTracker& tangent, bool error_control = false)
+      : SubstepScheme(SchemeTraits{false, true, true}), M_(M), st_(st), tangent_(tangent),
+        error_control_(error_control) {}
   Failure budget_spent(const IntegrationStatus& st) const override;
   Attempt attempt(const Point& P, const Vec3& dd, double dT, const Rates& first_stage) override;
   void before_settle(const Point& Q) override;
   double recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) override;
   void commit(Point& P, const Point& Q, SurfaceAt& at, const Vec3& dd, double T, double dT, bool switch_here) override;
-  double next_size(double dT) override { return 2 * dT; }
+  double next_size(double dT) override;
 
  private:
+  double step_error(const Point& P, const Point& N, const Rates& r1, double part);
   const Model& M_;
   IntegrationStatus& st_;
   TangentTracker& tangent_;
+  const bool error_control_;
+  double error_ = 0;
+  bool last_rejected_ = false;
+  Surface end_surface_;
   BackwardEulerStep step_;
   Point end_;  // step_.N, settled in place by the substepper: the tangent reads step_ unsettled
   BoundaryStep boundary_;
