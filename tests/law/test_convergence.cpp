@@ -89,3 +89,20 @@ TEST_CASE("Invariant 9: modified Euler error follows STOL", "[invariant9]") {
   CHECK(slope < 1.1);
   for (size_t i = 0; i < tol.size(); ++i) CHECK(e[i] < tol[i]);
 }
+
+TEST_CASE("Invariant 9: the implicit scheme's error follows the square root of STOL", "[invariant9][implicit]") {
+  // Backward Euler keeps its first-order end point and holds its local error
+  // estimate to STOL / 10 (docs/model.md 7.5): the global error falls as
+  // sqrt(STOL), from the same 10 increments per leg at every STOL.
+  std::vector<double> tol, e;
+  for (double stol : {1e-3, 1e-4, 1e-5, 1e-6, 1e-7}) {
+    tol.push_back(stol);
+    e.push_back(rel_error(end_traction(model_with(kSet, Scheme::implicit, stol), 10)));
+  }
+  const double slope = loglog_slope(tol, e);
+  CAPTURE(e, slope);
+  CHECK(slope > 0.4);
+  CHECK(slope < 0.6);
+  // Measured: 3.6e-3 at STOL 1e-3 ... 4.6e-5 at 1e-7 (slope 0.49).
+  for (size_t i = 0; i < tol.size(); ++i) CHECK(e[i] < 0.3 * std::sqrt(tol[i]));
+}

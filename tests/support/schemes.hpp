@@ -79,6 +79,9 @@ inline SchemeUnderTest backward_euler_under_test() {
   s.name = "backward Euler";
   s.dilatancy_ratio = 1e-2;  // 4.8e-3 measured: the ratio at the end of the step
   s.closure = 1e-4;
+  // STOL 0.9 holds the error estimate to 0.09 (docs/model.md 7.5): one step
+  // per increment on the order path, first order.
+  s.order_stol = 0.9;
   s.order_min = 0.85;
   s.order_max = 1.15;
   // 100 sets with their own seed: the extreme families cost the implicit

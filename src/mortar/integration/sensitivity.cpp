@@ -73,19 +73,34 @@ Sensitivity backward_euler_sensitivity(const Model& M, const Point& P, const Vec
     secant_sensitivity(M, b.N.y, D);
     return D;
   }
-  // Frozen open components have the stiffness k (1 - d) of the damage at P.
-  Mat3 Dk = Mat3::Zero();
+  // The step's stiffnesses depend on P's state (rate_stiffness_over): a
+  // component on the secant k (1 - d) (frozen, or the normal closing against
+  // its elastic opening) through the damage at P; the growing shear's drop
+  // across the elastic slip through ds and the slip's direction at P.
+  Mat3 Dsep = Mat3::Zero(), Dflow = Mat3::Zero();  // of kS o dd and of kF
   if (P.y.open) {
-    if (!b.grow_n && P.y.dn < 1) Dk.row(0) = -M.p.kn * DP.damage.row(0);
+    const Vec3 e = P.y.elastic_separation();
+    if (P.y.dn < 1 && (!b.grow_n || (dd[0] < 0 && e[0] > 0))) Dsep.row(0) = -M.p.kn * dd[0] * DP.damage.row(0);
+    if (!b.grow_n && P.y.dn < 1) Dflow.row(0) = -M.p.kn * DP.damage.row(0);
     if (!b.grow_s && P.y.ds < 1) {
-      Dk.row(1) = -M.p.ks * DP.damage.row(1);
-      Dk.row(2) = -M.p.ks * DP.damage.row(1);
+      for (int i = 1; i < 3; ++i) {
+        Dsep.row(i) = -M.p.ks * dd[i] * DP.damage.row(1);
+        Dflow.row(i) = -M.p.ks * DP.damage.row(1);
+      }
+    }
+    if (b.k.across_drop > 0) {
+      const Eigen::Vector2d u(b.k.axis[0], b.k.axis[1]), v(dd[1], dd[2]);
+      const Eigen::Matrix<double, 2, 3> De = (DP.separation - DP.plastic).bottomRows<2>();
+      const Eigen::Matrix<double, 2, 3> Du = (Eigen::Matrix2d::Identity() - u * u.transpose()) * De / hypot_of(e[1], e[2]);
+      const double vu = v.dot(u);
+      Dsep.bottomRows<2>() += -M.p.ks * (v - vu * u) * DP.damage.row(1) +
+                              b.k.across_drop * (u * (v.transpose() * Du) + vu * Du);
     }
   }
   const double dl = b.solution.unknowns().dl;
-  const Mat3 Dtrial = DP.sigma + b.k.separation_matrix() * Ddd + dd.asDiagonal() * Dk;
+  const Mat3 Dtrial = DP.sigma + b.k.separation_matrix() * Ddd + Dsep;
   Mat73 B = Mat73::Zero();
-  B.middleRows<3>(unknown::sigma_n) = -Dtrial + dl * b.end.m.asDiagonal() * Dk;  // k_sep = k_flow on a frozen branch
+  B.middleRows<3>(unknown::sigma_n) = -Dtrial + dl * b.end.m.asDiagonal() * Dflow;
   B.middleRows<3>(unknown::work_I) = -DP.kappa;
   B = b.problem.row_scale.asDiagonal() * B;
   const Mat73 Dx = -Eigen::FullPivLU<Mat7>(b.solution.jacobian).solve(B);

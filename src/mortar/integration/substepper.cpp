@@ -135,7 +135,12 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // tan(phi) times the threshold), or all of it on separating, leaves the
     // point inside the surface: what follows is decided afresh, elastic up to
     // the surface first, as a call that starts there would (increment.cpp).
-    if (normal == Landing::lands || separates) return std::min(T, 1.0);
+    // Where the landing substep ends depends on the increment; its tangent
+    // is held fixed there (docs/model.md 7.5).
+    if (normal == Landing::lands || separates) {
+      tangent_.lost = tangent_.lost || bool(tangent_);
+      return std::min(T, 1.0);
+    }
     // The next substep's size, when there is one: a run that reaches T = 1
     // has done its segment, and no later substep of the increment reads what
     // next_size() keeps (its square root and division are then not waited on).
