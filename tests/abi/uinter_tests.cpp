@@ -92,7 +92,9 @@ TEST_CASE("UINTER: DDSDDR is d STRESS / d RDISP (central differences)", "[uinter
     double r[3] = {0, 0, 0};
     const double target[3] = {-0.001, 0.003, 0};
     drive(pt, r, target, 10);
-    const double r1[3] = {r[0] - 2e-4, r[1] + 2e-3, r[2] - 1e-3};
+    // Half the increment that completes the normal damage in a substep (its
+    // tangent is flagged approximate there, docs/model.md 7.5).
+    const double r1[3] = {r[0] - 1e-4, r[1] + 1e-3, r[2] - 5e-4};
     CHECK(ddsddr_fd_error(pt, r, r1, 1e-8) < 1e-6);
   }
 }
