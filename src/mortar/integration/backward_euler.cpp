@@ -58,7 +58,8 @@ void end_plastic_step(const Model& M, const Point& P, Point& N, const Vec3& sigm
 
 }  // namespace
 
-BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st) {
+BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st,
+                                 bool stage_branches) {
   BackwardEulerStep out;
   out.N = P;
   out.N.y.separation += dd;
@@ -92,7 +93,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
   // would decrease is re-solved frozen (at most two passes), unless that has
   // no solution, or unloads although the secant loads: the more growing
   // branch then stands (settle keeps the damage from decreasing).
-  const bool freeze_slip = P.y.open && slip_reverses(P.y, dd);
+  const bool freeze_slip = stage_branches && P.y.open && slip_reverses(P.y, dd);
   bool grow_n = true, grow_s = !freeze_slip;
   Outcome o = solve_on_branches(M, P, S, dd, grow_n, grow_s, out, st);
   if (o == Outcome::failed && freeze_slip) {
@@ -101,7 +102,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
   }
   if (o == Outcome::unloading) return elastic();
   if (o == Outcome::failed) return out;  // the caller halves the step
-  for (int pass = 0; P.y.open && pass < 2; ++pass) {
+  for (int pass = 0; P.y.open && pass < (stage_branches ? 2 : 1); ++pass) {
     // Decided with the end-point plastic increment; exact for a finite step:
     // d_old (dd - dp) <= b dp is the secant damage at the end not decreasing.
     const Vec3 dp = out.solution.unknowns().dl * out.end.m;
@@ -110,7 +111,7 @@ BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd,
     if (keep_n == grow_n && keep_s == grow_s) break;
     BackwardEulerStep frozen = out;
     const Outcome f = solve_on_branches(M, P, S, dd, keep_n, keep_s, frozen, st);
-    if (f == Outcome::failed || (f == Outcome::unloading && f0.dF.dot(sigma_e - P.sigma) > 0)) break;
+    if (f == Outcome::failed || (stage_branches && f == Outcome::unloading && f0.dF.dot(sigma_e - P.sigma) > 0)) break;
     if (f == Outcome::unloading) return elastic();
     out = frozen;
     grow_n = keep_n;

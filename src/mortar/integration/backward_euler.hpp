@@ -25,7 +25,10 @@ struct BackwardEulerStep {
 // One step from P over dd: elastic (the secant trial stays inside, or the
 // rate statement unloads), plastic (the local problem solved on the branches
 // of stage()), or not ok when the local solve failed (the caller halves).
-BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st);
+// Without stage_branches the growing branches come first and one freeze pass
+// follows (the apex zone's steps of the explicit schemes, docs/model.md 7.5).
+BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st,
+                                 bool stage_branches = true);
 
 // The closed-regime step that ends on the regime boundary delta_e_n = 0
 // (sigma_n = 0): the part theta of dd after which the backward-Euler end point

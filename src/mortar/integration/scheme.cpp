@@ -166,7 +166,7 @@ Failure BackwardEuler::budget_spent(const IntegrationStatus& st) const {
 // The whole plastic part first; a step whose Newton iteration fails is halved
 // (down to the minimum substep, then Failure::local_solve_failed).
 Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
-  step_ = backward_euler(M_, P, dd, st_);
+  step_ = backward_euler(M_, P, dd, st_, error_control_);
   if (!step_.ok && !P.y.open && P.sigma[0] + M_.p.kn * dd[0] > 0) {
     // No closed-regime solution and a tensile trial: the step may cross into
     // the open regime where no closed point exists; end it on the boundary.

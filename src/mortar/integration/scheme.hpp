@@ -133,8 +133,9 @@ double local_error(const Model& M, const Point& P, const Rates& r1, const Rates&
 // Backward-Euler steps (return mapping), halved on a failed local solve, with
 // the consistent tangent carried through every accepted step on request.
 // With error control (scheme 3, docs/model.md 7.5) a step whose end differs
-// from the forward-Euler stage by more than STOL (local_error) is cut; the
-// apex zone's steps (substepper.hpp) take none.
+// from the forward-Euler stage by more than STOL / 10 (local_error) is cut
+// and the branches are stage()'s; the explicit schemes' apex-zone steps
+// (substepper.hpp) keep the earlier step.
 class BackwardEuler final : public SubstepScheme {
  public:
   BackwardEuler(const Model& M, IntegrationStatus& st, TangentTracker& tangent, bool error_control = false)

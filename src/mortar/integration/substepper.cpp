@@ -20,6 +20,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   const double length = d.norm();
   const bool bounded = length > M_.substep_length;
   scheme_.set_floor(c.min_substep);
+  apex_.set_floor(c.min_substep);
   at_boundary_ = false;
   // Every bracket starts closed: one left open by the run before (stopped
   // inside it) would cut this run's substeps towards another point's sizes.
@@ -47,7 +48,10 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
     if (unloaded && yield_of(P_, surface_at_start_) < -yield_tolerance(M_, P_.sigma)) return T;
-    if (bounded) scheme_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
+    if (bounded) {
+      scheme_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
+      apex_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
+    }
     dT = std::min(dT, 1 - T);
     const Vec3 dd = dT * d;
     with_psi(M_, surface_at_start_.S, P_.y.wIII);  // the last end surface may be a shape (scheme.hpp, Attempt)

@@ -19,7 +19,8 @@ namespace mortar {
 class Substepper {
  public:
   Substepper(const Model& M, Point& P, IntegrationStatus& st, TangentTracker& tangent, SubstepScheme& scheme)
-      : M_(M), P_(P), st_(st), tangent_(tangent), scheme_(scheme), apex_(M, st, tangent) {}
+      : M_(M), P_(P), st_(st), tangent_(tangent), scheme_(scheme),
+        apex_(M, st, tangent, M.controls.scheme == Scheme::implicit) {}
 
   // Plastic substepping over the separation increment d, starting on the
   // surface; `at` is the surface at P (surface_at). Returns the fraction of
