@@ -56,6 +56,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run_cmd->add_flag("--print-residuals", run.print_residuals,
                     "--solver implicit: every attempt's residual sequence on stderr");
+  run_cmd->add_flag("--symmetric-tangent", run.symmetric_tangent,
+                    "--solver implicit: Newton on DDSDDR's symmetric part (no UNSYMM)");
   run_cmd->add_option("--stol", run.stol, "Substep error tolerance STOL, props(16); 0 keeps the default 1e-5");
   run_cmd->add_option("--points", run.points, "Identical interface points")->check(CLI::Range(1, 10000000))
       ->capture_default_str();

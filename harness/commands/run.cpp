@@ -43,6 +43,9 @@ void check_solver_options(const SolverOptionUse& u) {
   }
   const char* why = " is an option of --solver implicit only: the explicit solver never cuts an increment back";
   if (u.max_cuts_given) throw InputError("--max-cuts " + std::to_string(u.max_cuts) + why);
+  if (u.symmetric_tangent)
+    throw InputError(std::string("--symmetric-tangent is an option of --solver implicit only: the explicit "
+                                 "solver does not use the routine's tangent"));
   if (u.print_residuals)
     throw InputError(std::string("--print-residuals is an option of --solver implicit only: the explicit solver's "
                                  "Newton uses a finite-difference Jacobian, whose residuals show nothing about "
@@ -125,6 +128,7 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
   settings.stol = a.stol;
   settings.options.traction_tolerance = a.traction_tol;
   settings.options.max_cuts = a.max_cuts;
+  settings.options.symmetric_tangent = a.symmetric_tangent;
   const ParameterSet params = read_parameter_file(a.params);
   const Protocol protocol = read_protocol_file(a.protocol);
   JointTest scene(protocol, 1);
@@ -223,7 +227,7 @@ int run_command(const RunArgs& a, std::ostream& err) {
                      " violates the rule: a finite tolerance > 0 [MPa]");
   check_output_file(a.out, "--out");
   check_solver_options({a.solver, a.points_given, a.block_given, a.max_cuts_given, a.print_residuals, a.points,
-                        a.block, a.max_cuts});
+                        a.block, a.max_cuts, a.symmetric_tangent});
   return a.solver == "implicit" ? run_implicit(a, err) : run_explicit(a, err);
 }
 

@@ -20,6 +20,7 @@ struct SolverOptionUse {
   std::string solver = "explicit";
   bool points_given = false, block_given = false, max_cuts_given = false, print_residuals = false;
   int points = 1, block = 512, max_cuts = 5;
+  bool symmetric_tangent = false;
 };
 
 // InputError (exit 2) when an option does not belong to the chosen solver:
@@ -33,7 +34,7 @@ struct RunArgs {
   std::string solver = "explicit";
   double stol = 0, traction_tol = 1e-9;
   int points = 1, block = 512, max_cuts = 5;
-  bool quiet = false, print_residuals = false;
+  bool quiet = false, print_residuals = false, symmetric_tangent = false;
   bool points_given = false, block_given = false, max_cuts_given = false;
 };
 

@@ -127,6 +127,8 @@ void ImplicitPointSolver::read_call() {
     stress_[i] = kStressFactor[i] * traction[i];
     for (int j = 0; j < n_dir_; ++j) ddsddr_(i, j) = kStressFactor[i] * T(i, j) * kRdispFactor[j];
   }
+  // Without UNSYMM Abaqus/Standard keeps only the symmetric part (docs/abaqus.md).
+  if (options_.symmetric_tangent) ddsddr_ = (0.5 * (ddsddr_ + ddsddr_.transpose())).eval();
 }
 
 // True when the routine abandons the attempt (PNEWDT < 1). Anything else the

@@ -44,6 +44,7 @@ struct ImplicitOptions {
   int max_cuts = 5;                  // cut-backs per program increment (Abaqus/Standard's default I_A = 5)
   double divergence_cut = 0.25;      // size factor after a diverged attempt (Abaqus/Standard's D_f)
   double min_fraction = 1e-5;        // smallest sub-increment, of the program increment
+  bool symmetric_tangent = false;    // Newton on DDSDDR's symmetric part (Abaqus/Standard without UNSYMM)
 };
 
 inline constexpr int kMaxRecordedIterations = 64;  // bound of ImplicitOptions::max_iterations
