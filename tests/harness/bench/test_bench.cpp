@@ -236,7 +236,7 @@ TEST_CASE("forward Euler is first order on van der Pluijm, the implicit scheme a
     CHECK(slope > 0.6);
     CHECK(slope < 1.4);
     // The implicit scheme's substeps hold its error (docs/model.md 7.5): it
-    // no longer grows tenfold with a decade of h, and stays accurate.
+    // does not grow tenfold with a decade of h, and stays accurate.
     const double i_fine = find(all, path, "implicit", 0, 1e-4).error,
                  i_coarse = find(all, path, "implicit", 0, 1e-3).error;
     CAPTURE(i_fine, i_coarse);

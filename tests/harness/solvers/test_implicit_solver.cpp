@@ -188,9 +188,8 @@ TEST_CASE("The implicit solver reproduces the modified-Euler curve within the im
   // Arrange: the reference is the explicit solver with modified Euler at
   // STOL 1e-8 (the series' setting; its own error is below 1e-6 MPa: STOL
   // 1e-5 moves it by 7.5e-7 MPa). The implicit scheme's substeps hold its
-  // local error to STOL / 10 (docs/model.md 7.5): its error no longer follows
-  // the increment (before: first order, 3.6e-4 MPa at these increments and
-  // half that at half of them), and with STOL 1e-7 it falls by about sqrt(100).
+  // local error to STOL / 10 (docs/model.md 7.5): its error follows STOL, not
+  // the increment, and with STOL 1e-7 it falls by about sqrt(100).
   const ParameterSet params = read_parameter_file(kVdp + "params_sn0.5.toml");
   const Protocol protocol = read_protocol_file(kVdp + "protocol_sn0.5.toml");
   Protocol halved = protocol;
