@@ -223,6 +223,11 @@ bool ImplicitPointSolver::hopeless(ResidualSequence& r) const {
   return false;
 }
 
+// Newton on DDSDDR until the residual rises: the step crossed a kink of the
+// response (the elastic-plastic boundary at a brittle peak, where Newton on
+// the one-sided tangents would cycle). From there on the Jacobian is that of
+// the iterate before the rise, corrected by Broyden's rank-one update with
+// every step taken (the secant across the kink).
 AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, CallTime time, ResidualSequence& record) {
   time.increment = static_cast<int>(solved_in_step_ + 1);
   time.iteration = 0;
@@ -230,18 +235,33 @@ AttemptOutcome ImplicitPointSolver::attempt(const PointTargets& t, CallTime time
   const bool any_free = std::any_of(t.kind.begin(), t.kind.begin() + n_dir_,
                                     [](Control c) { return c == Control::traction; });
   if (any_free && !predict(t, time, x, record)) return record.outcome;
+  Vec3 x_last = x, R_last = Vec3::Zero();
+  Mat3 J = Mat3::Zero(), tangent_last = ddsddr_;
+  bool secant = false;
   for (int k = 1; k <= options_.max_iterations; ++k) {
     call(x, time);
     if (abandoned(record)) return record.outcome;
     const Vec3 R = residual(t);
-    record.residual[static_cast<size_t>(record.count++)] = R.cwiseAbs().maxCoeff();
-    if (record.residual[static_cast<size_t>(k - 1)] <= options_.traction_tolerance) {
+    const size_t n = static_cast<size_t>(record.count++);
+    record.residual[n] = R.cwiseAbs().maxCoeff();
+    if (record.residual[n] <= options_.traction_tolerance) {
       commit(x, record);
       return record.outcome = AttemptOutcome::converged;
     }
-    if (hopeless(record)) return record.outcome;
-    const Vec3 dx = newton_step(t, -R);
+    if (!secant && n >= 1 && record.residual[n] > record.residual[n - 1]) {
+      secant = true;
+      J = tangent_last;
+    }
+    if (!secant && hopeless(record)) return record.outcome;
+    if (secant) {
+      const Vec3 s = x - x_last;
+      if (s.squaredNorm() > 0) J += ((R - R_last) - J * s) * s.transpose() / s.squaredNorm();
+    }
+    const Vec3 dx = secant ? Vec3(solve_on_free(t, J, -R, n_dir_)) : newton_step(t, -R);
     if (!dx.allFinite()) return record.outcome = AttemptOutcome::diverged;
+    x_last = x;
+    R_last = R;
+    tangent_last = ddsddr_;
     x += dx;
   }
   return record.outcome = AttemptOutcome::not_converged;

@@ -15,13 +15,15 @@
 //   k. call at the iterate; residual r_k = max_F |STRESS_j - P_j| (P the
 //      applied traction, C_j target_j); converged when r_k <= the traction
 //      tolerance, else the Newton update dx_F = -K_FF^-1 R_F with this
-//      call's DDSDDR. No line search.
+//      call's DDSDDR; once the residual rises, with the secant Jacobian
+//      (Broyden's update, attempt() in implicit_solver.cpp). No line search.
 // An attempt is abandoned and retried on a smaller piece from the same start
 // when the routine asks for it (PNEWDT < 1: PNEWDT times the size), and, with
 // Abaqus/Standard's divergence cut-back factor D_f = 0.25 (its *CONTROLS default,
 // as transcribed, not checked against a manual here), when the residual
 // grows in two consecutive iterations or is not finite, when Newton repeats a
-// two-iterate cycle, or after `max_iterations`. The cut-backs of one program
+// two-iterate cycle (both before the secant takes over), or after
+// `max_iterations`. The cut-backs of one program
 // increment are bounded by `max_cuts` and `min_fraction`; then the run fails
 // with the last attempt's outcome and residual.
 #pragma once
