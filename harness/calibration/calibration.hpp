@@ -29,6 +29,13 @@ struct CalibratedParameter {
 struct Calibration {
   std::array<CalibratedParameter, kParameterCount> entries;
   std::vector<std::string> notes;  // cross-checks and warnings for the report
+  // Correlations between direct values fitted together (Table 1 positions i < j):
+  // the fit carries them with the standard errors (calibration/uncertainty.hpp).
+  struct Correlation {
+    int i = 0, j = 0;
+    double value = 0;
+  };
+  std::vector<Correlation> correlations;
 
   CalibratedParameter& operator[](const char* name) { return entries.at(static_cast<size_t>(parameter_index(name))); }
   const CalibratedParameter& operator[](const char* name) const {

@@ -40,6 +40,22 @@ inline size_t first_branch_end(const TestCurve& c) {
   return c.x.size();
 }
 
+// The loading envelope: the points beyond every abscissa before them. A
+// monotonic curve is its own envelope; with unloading-reloading it is the
+// virgin curve, which the monotonic rules read.
+inline TestCurve envelope_of(const TestCurve& c) {
+  TestCurve e = c;
+  e.x.clear(), e.y.clear(), e.uplift.clear();
+  double reached = -INFINITY;
+  for (size_t i = 0; i < c.x.size(); ++i) {
+    if (c.x[i] < reached) continue;
+    reached = c.x[i];
+    e.x.push_back(c.x[i]), e.y.push_back(c.y[i]);
+    if (c.has_uplift()) e.uplift.push_back(c.uplift[i]);
+  }
+  return e;
+}
+
 // The points of the elastic branch: before the largest sample, below 90 % of
 // it (the law is elastic up to the peak; the margin keeps out a post-peak
 // point that noise lifted above the true peak's neighbours).

@@ -10,6 +10,7 @@
 
 #include "calibration/curve_reading.hpp"
 #include "calibration/tension_rules.hpp"
+#include "calibration/unloading_rules.hpp"
 #include "input/input_error.hpp"
 
 namespace mortar::harness {
@@ -164,7 +165,8 @@ double point_scatter(const std::vector<TestCurve>& curves, double ks) {
 //    without a monotonic shear curve 10 GIC (Table 1's ratio), or 0.05 N/mm;
 //  - m, n: the friction is worn out (m wIII ~ 4) over the slip of the curves,
 //    with wIII ~ |sigma_n| (tan phi0 - tan phir) slip / 2 (Eq. 9);
-//  - bn, bs: Table 1's values (every set there has 10 and 3).
+//  - bn, bs: Table 1's values (every set there has 10 and 3), replaced by
+//    what unloading branches give where the data hold them (unloading_rules.hpp).
 void softening_start(const std::vector<TestCurve>& curves, bool tension, Calibration& cal) {
   const double ks = cal["ks"].value, drop = std::tan(cal["phi0"].value * kDegree) - std::tan(cal["phir"].value * kDegree);
   double work = 0, wear = 0;
@@ -195,7 +197,7 @@ void dilatancy_start(const std::vector<TestCurve>& curves, Calibration& cal) {
   double sum = 0;
   int n = 0;
   for (const TestCurve& c : curves) {
-    if (!c.has_uplift()) continue;
+    if (!c.has_uplift() || c.sigma_n > 0) continue;
     const size_t p = index_of_peak(c.y, first_branch_end(c)), q = p + 2;
     if (q >= c.x.size()) continue;
     const double slip = (c.x[q] - c.y[q] / ks) - (c.x[p] - c.y[p] / ks);
@@ -229,17 +231,23 @@ DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {
   DirectResult r;
   Calibration& cal = r.calibration;
   const bool tension = std::any_of(curves.begin(), curves.end(), [](const TestCurve& c) { return !c.shear(); });
+  // The hyperbola and the residual friction from the tests under
+  // compression; one at constant tension is for bs (unloading_rules.hpp).
   for (const TestCurve& c : curves)
-    if (c.shear()) r.peaks.push_back(shear_peak(c));
+    if (c.shear() && c.sigma_n < 0) r.peaks.push_back(shear_peak(c));
   const std::vector<Level> levels = levels_of(r.peaks);
   if (levels.size() < 2 || (!tension && levels.size() < 3))
     throw InputError("the data hold shear curves at " + std::to_string(levels.size()) +
-                     " normal stress(es): the hyperbola needs at least 2 with a tension curve, 3 without one");
+                     " compressive normal stress(es): the hyperbola needs at least 2 with a tension curve, 3 without one");
   const Estimate ks = shear_stiffness(curves);
   cal["ks"] = {ks.value, Stage::direct, "initial slope of the shear curves", ks.se};
   if (tension) {
     TensionRules t = tension_rules(curves);
     cal["kn"] = t.kn, cal["ft0"] = t.ft0, cal["GIC"] = t.GIC;
+    const int at[3] = {parameter_index("kn"), parameter_index("ft0"), parameter_index("GIC")};
+    for (int i = 0; i < 3; ++i)
+      for (int j = i + 1; j < 3; ++j)
+        if (t.correlation[i][j] != 0) cal.correlations.push_back({at[i], at[j], t.correlation[i][j]});
     cal.notes.insert(cal.notes.end(), t.notes.begin(), t.notes.end());
   }
   // Noise-free data (synthetic) would give zero weights' inverse: a floor
@@ -248,6 +256,7 @@ DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {
   residual_rule(levels, sd, cal);
   hyperbola_rules(levels, tension, sd, cal);
   softening_start(curves, tension, cal);
+  unloading_rules(curves, cal);
   dilatancy_start(curves, cal);
   fill_placeholders(tension, cal);
   return r;

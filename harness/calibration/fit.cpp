@@ -6,6 +6,7 @@
 
 #include <unsupported/Eigen/NonLinearOptimization>
 
+#include "calibration/residuals.hpp"
 #include "calibration/uncertainty.hpp"
 #include "input/input_error.hpp"
 #include "solvers/mixed_control.hpp"
@@ -46,8 +47,9 @@ FitUnknown unknown(const char* name, double lo, double hi, double sigma_n = NAN)
 
 std::vector<FitUnknown> make_unknowns(const std::vector<TestCurve>& curves, const Calibration& start, bool per_level) {
   std::set<double> levels;
+  // m and n per level under compression: at constant tension wIII = 0 (Eq. 9).
   for (const TestCurve& c : curves)
-    if (c.shear()) levels.insert(c.sigma_n);
+    if (c.shear() && c.sigma_n < 0) levels.insert(c.sigma_n);
   const bool dilatancy = start["psi0"].stage == Stage::fit;
   // The strengths the direct rules gave, refined: held at their direct
   // values, a 0.4 % error of c0 (a digitised peak just short of the true one)
@@ -74,77 +76,6 @@ std::vector<FitUnknown> make_unknowns(const std::vector<TestCurve>& curves, cons
   u.push_back(unknown("bs", 0.01, 100));
   return u;
 }
-
-// The residuals of the whole data set for values of the unknowns.
-class Residuals {
- public:
-  Residuals(const std::vector<TestCurve>& curves, const Parameters& base, const FitOptions& o)
-      : curves_(curves), base_(base), o_(o) {
-    for (const TestCurve& c : curves) size_ += long(c.x.size() * (c.has_uplift() ? 2 : 1));
-  }
-  long size() const { return size_; }
-  long evaluations() const { return evaluations_; }
-
-  Eigen::VectorXd operator()(const std::vector<FitUnknown>& unknowns, const Eigen::VectorXd& v,
-                             std::vector<CurveMisfit>* misfit = nullptr) {
-    ++evaluations_;
-    Eigen::VectorXd r(size_);
-    long at = 0;
-    for (const TestCurve& c : curves_) {
-      CurveMisfit m{c.name};
-      SimulatedCurve sim;
-      const Parameters p = parameters_for(c, base_, unknowns, v);
-      // A set that breaks a rule of the law (phir > phi0, c0 <= ft0 tan phi0)
-      // or a run that cannot be completed: a penalty the solver steps away from.
-      m.failed = !validate(p).ok();
-      try {
-        if (!m.failed) sim = simulate(p, c, o_.simulation);
-      } catch (const RunFailure&) {
-        m.failed = true;
-      }
-      const double sy = scale(c.y), su = c.has_uplift() ? scale(c.uplift) : 1;
-      double ey = 0, eu = 0;
-      const long first = at;
-      for (size_t i = 0; i < c.x.size(); ++i) {
-        const double d = m.failed ? 10 * sy : sim.y[i] - c.y[i];
-        r[at++] = d / sy, ey += d * d;
-        if (!c.has_uplift()) continue;
-        const double e = m.failed ? 10 * su : sim.uplift[i] - c.uplift[i];
-        r[at++] = e / su, eu += e * e;
-      }
-      m.rms_scaled = std::sqrt(r.segment(first, at - first).squaredNorm() / double(at - first));
-      m.rms_traction = std::sqrt(ey / c.x.size());
-      if (c.has_uplift()) m.rms_uplift = std::sqrt(eu / c.x.size());
-      if (misfit) misfit->push_back(m);
-    }
-    return r;
-  }
-
-  // Forward differences, steps of 1e-3 of each value (of 1 for a linear
-  // unknown below 1, which may be 0): far above the integration's own noise
-  // (STOL), small against the curvature.
-  Eigen::MatrixXd jacobian(const std::vector<FitUnknown>& unknowns, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& r0) {
-    Eigen::MatrixXd J(size_, v.size());
-    for (long j = 0; j < v.size(); ++j) {
-      Eigen::VectorXd w = v;
-      w[j] += 1e-3 * (unknowns[size_t(j)].linear ? std::max(std::abs(v[j]), 1.0) : v[j]);
-      J.col(j) = ((*this)(unknowns, w) - r0) / (w[j] - v[j]);
-    }
-    return J;
-  }
-
- private:
-  static double scale(const std::vector<double>& y) {
-    double m = 0;
-    for (double x : y) m = std::max(m, std::abs(x));
-    return m > 0 ? m : 1;
-  }
-  const std::vector<TestCurve>& curves_;
-  Parameters base_;
-  const FitOptions& o_;
-  long size_ = 0, evaluations_ = 0;
-};
 
 // The logistic-on-log-scale transform of fit.hpp, unknown by unknown.
 struct Transform {
@@ -269,6 +200,44 @@ std::vector<std::string> labels(const std::vector<FitUnknown>& u, std::vector<in
   return names;
 }
 
+// bn where a tension curve unloads, bs where a shear curve unloads open
+// (at constant tension): the only data that separate them (unloading_rules.hpp).
+bool shown_by_unloading(const std::vector<TestCurve>& curves, const FitUnknown& u) {
+  const std::string name = u.label();
+  for (const TestCurve& c : curves)
+    if ((name == "bn" && c.kind == TestKind::cyclic_tension) || (name == "bs" && c.cycles() && c.shear() && c.sigma_n > 0))
+      return true;
+  return false;
+}
+
+// At the solution: what the data do not determine there is held at its
+// placeholder (the base value) and the rest refitted from where it stood.
+void settle_at_solution(Residuals& residuals, const FitOptions& o, FitResult& fit, Outcome& last) {
+  for (int round = 0;; ++round) {
+    fit.value = last.value;
+    fit.residuals = residuals(fit.unknowns, fit.value);
+    fit.jacobian = residuals.jacobian(fit.unknowns, fit.value, fit.residuals);
+    std::vector<int> prefer_here;
+    const std::vector<std::string> here = labels(fit.unknowns, prefer_here);
+    std::vector<Unidentifiable> out = unidentifiable(fit.jacobian, fit.value, here, prefer_here);
+    if (out.empty() || round == 3 || out.size() >= fit.unknowns.size()) break;
+    std::vector<bool> drop(fit.unknowns.size(), false);
+    for (const Unidentifiable& u : out) {
+      drop[size_t(u.column)] = true;
+      fit.held.push_back(here[size_t(u.column)] + ": held at the solution; the data determine only a combination (" +
+                         u.direction + ")");
+    }
+    std::vector<FitUnknown> kept;
+    Eigen::VectorXd kv(long(fit.unknowns.size()));
+    for (size_t k = 0; k < fit.unknowns.size(); ++k)
+      if (!drop[k]) kv[long(kept.size())] = fit.value[long(k)], kept.push_back(fit.unknowns[k]);
+    kv.conservativeResize(long(kept.size()));
+    fit.unknowns = kept;
+    last = least_squares(residuals, fit.unknowns, kv, o);
+    fit.iterations += last.iterations;
+  }
+}
+
 }  // namespace
 
 FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration& start, const FitOptions& o) {
@@ -327,31 +296,59 @@ FitResult fit_softening(const std::vector<TestCurve>& curves, const Calibration&
   }
   Outcome last = least_squares(residuals, fit.unknowns, v, o);
   fit.iterations = first.iterations + last.iterations;
-  // At the solution: what the data do not determine there is held at its
-  // placeholder (the base value) and the rest refitted from where it stood.
-  for (int round = 0;; ++round) {
-    fit.value = last.value;
-    fit.residuals = residuals(fit.unknowns, fit.value);
-    fit.jacobian = residuals.jacobian(fit.unknowns, fit.value, fit.residuals);
-    std::vector<int> prefer_here;
-    const std::vector<std::string> here = labels(fit.unknowns, prefer_here);
-    std::vector<Unidentifiable> out = unidentifiable(fit.jacobian, fit.value, here, prefer_here);
-    if (out.empty() || round == 3 || out.size() >= fit.unknowns.size()) break;
-    std::vector<bool> drop(fit.unknowns.size(), false);
-    for (const Unidentifiable& u : out) {
-      drop[size_t(u.column)] = true;
-      fit.held.push_back(here[size_t(u.column)] + ": held at the solution; the data determine only a combination (" +
-                         u.direction + ")");
+  settle_at_solution(residuals, o, fit, last);
+  // bn and bs held at the start are looked at again at the solution where the
+  // data hold unloading branches that show them (unloading_rules.hpp): a curve
+  // the starting values could not run (a penalty, flat) may determine them
+  // there. Released ones are refitted.
+  std::vector<FitUnknown> trial = fit.unknowns;
+  Eigen::VectorXd tv(long(trial.size() + all.size()));
+  tv.head(long(trial.size())) = fit.value;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (held[k] && shown_by_unloading(curves, all[k]))
+      tv[long(trial.size())] = vs[long(k)], trial.push_back(all[k]);
+  tv.conservativeResize(long(trial.size()));
+  if (trial.size() > fit.unknowns.size()) {
+    std::vector<int> prefer_trial;
+    const std::vector<std::string> trial_names = labels(trial, prefer_trial);
+    std::vector<bool> still(trial.size(), false);
+    for (const Unidentifiable& u : unidentifiable(residuals.jacobian(trial, tv, residuals(trial, tv)), tv, trial_names,
+                                                  prefer_trial))
+      still[size_t(u.column)] = true;
+    const size_t before = fit.unknowns.size();
+    for (size_t j = before; j < trial.size(); ++j) {
+      if (still[j]) continue;
+      const std::string prefix = trial_names[j] + ": held;";
+      fit.held.erase(std::remove_if(fit.held.begin(), fit.held.end(),
+                                    [&](const std::string& h) { return h.rfind(prefix, 0) == 0; }),
+                     fit.held.end());
+      fit.unknowns.push_back(trial[j]);
+      fit.value.conservativeResize(long(fit.unknowns.size()));
+      fit.value[long(fit.unknowns.size() - 1)] = tv[long(j)];
     }
-    std::vector<FitUnknown> kept;
-    Eigen::VectorXd kv(long(fit.unknowns.size()));
-    for (size_t k = 0; k < fit.unknowns.size(); ++k)
-      if (!drop[k]) kv[long(kept.size())] = fit.value[long(k)], kept.push_back(fit.unknowns[k]);
-    kv.conservativeResize(long(kept.size()));
-    fit.unknowns = kept;
-    last = least_squares(residuals, fit.unknowns, kv, o);
-    fit.iterations += last.iterations;
+    if (fit.unknowns.size() > before) {
+      last = least_squares(residuals, fit.unknowns, fit.value, o);
+      fit.iterations += last.iterations;
+      settle_at_solution(residuals, o, fit, last);
+    }
   }
+  std::vector<double> se;
+  for (size_t i = 0; i < start.entries.size(); ++i)
+    if (start.entries[i].stage == Stage::direct && start.entries[i].std_error > 0)
+      fit.direct_index.push_back(int(i)), se.push_back(start.entries[i].std_error);
+  const long D = long(se.size());
+  fit.direct_covariance = Eigen::MatrixXd::Zero(D, D);
+  for (long k = 0; k < D; ++k) fit.direct_covariance(k, k) = se[size_t(k)] * se[size_t(k)];
+  for (const Calibration::Correlation& c : start.correlations) {
+    const auto a = std::find(fit.direct_index.begin(), fit.direct_index.end(), c.i);
+    const auto b = std::find(fit.direct_index.begin(), fit.direct_index.end(), c.j);
+    if (a == fit.direct_index.end() || b == fit.direct_index.end()) continue;
+    const long i = a - fit.direct_index.begin(), j = b - fit.direct_index.begin();
+    fit.direct_covariance(i, j) = fit.direct_covariance(j, i) = c.value * se[size_t(i)] * se[size_t(j)];
+  }
+  fit.direct_jacobian.resize(fit.residuals.size(), D);
+  for (long k = 0; k < D; ++k)
+    fit.direct_jacobian.col(k) = residuals.base_derivative(fit.direct_index[size_t(k)], fit.unknowns, fit.value, fit.residuals);
   fit.status = last.status;
   fit.converged = last.converged;
   fit.residuals = residuals(fit.unknowns, fit.value, &fit.misfit);

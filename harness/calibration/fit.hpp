@@ -81,6 +81,13 @@ struct FitResult {
   double rms = 0;            // of the scaled residuals
   long evaluations = 0;
   int iterations = 0;
+  // The direct rules' values the fit holds (Table 1 positions), their
+  // covariance (standard errors and correlations), and d residuals / d them
+  // at the optimum: what their uncertainty does to the fitted values
+  // (calibration/uncertainty.hpp).
+  std::vector<int> direct_index;
+  Eigen::MatrixXd direct_covariance;
+  Eigen::MatrixXd direct_jacobian;
   std::string status;        // why the solver stopped
   bool converged = false;    // the solver met a convergence test (not the budget, not machine precision)
 };

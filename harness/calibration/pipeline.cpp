@@ -33,7 +33,7 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   FitOptions one = s.fit;
   one.per_sigma_n = false;
   r.one_set = fit_softening(curves, r.direct.calibration, one);
-  r.one_set_uncertainty = uncertainty_from(r.one_set.jacobian, r.one_set.residuals);
+  r.one_set_uncertainty = uncertainty_from(r.one_set);
   r.final = r.direct.calibration;
   apply_fit(r.final, r.one_set, r.one_set_uncertainty);
   fill_placeholders(r.final["kn"].stage == Stage::direct, r.final);
@@ -59,7 +59,7 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
     FitResult from_one = fit_softening(curves, r.final, per);
     if (from_one.rms < r.per_level.rms) r.per_level = std::move(from_one), r.per_level_base = r.final.values();
   }
-  r.per_level_uncertainty = uncertainty_from(r.per_level.jacobian, r.per_level.residuals);
+  r.per_level_uncertainty = uncertainty_from(r.per_level);
   r.per_level_fitted = true;
   std::vector<std::pair<std::string, Parameters>> sets;
   for (const auto& [sigma_n, p] : per_level_sets(curves, r)) {

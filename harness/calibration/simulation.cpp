@@ -20,10 +20,11 @@ Protocol protocol_for(const TestCurve& c, const SimulationSettings& s) {
     normal.component[0] = {Control::traction, c.sigma_n};
     p.steps.push_back(normal);
   }
-  double travel = 0, last = 0;
-  for (double x : c.x) travel += std::abs(x - last), last = x;
-  const double h = travel > 0 ? travel / s.increments : 1;
-  last = 0;
+  // The increment from the largest |abscissa|, not the travel: unloading
+  // and reversals add increments rather than coarsen the loading branches.
+  double reach = 0, last = 0;
+  for (double x : c.x) reach = std::max(reach, std::abs(x));
+  const double h = reach > 0 ? reach / s.increments : 1;
   for (size_t i = 0; i < c.x.size(); ++i) {
     ProgramStep step;
     step.name = "to data point " + std::to_string(i + 1);

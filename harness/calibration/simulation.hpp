@@ -16,8 +16,9 @@
 namespace mortar::harness {
 
 struct SimulationSettings {
-  // Increments per test: the travel (sum of |dx|) is cut into about this many,
-  // and every data interval gets at least one. The law's substepping keeps
+  // Increments per test: the largest |abscissa| is cut into about this many
+  // (a monotonic test's travel; unloading and reversals add to them), and
+  // every data interval gets at least one. The law's substepping keeps
   // each increment accurate (docs/model.md 7.1); this only bounds the
   // mixed-control steps between data points.
   int increments = 300;

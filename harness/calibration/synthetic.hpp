@@ -21,6 +21,7 @@ struct SyntheticTest {
   double sigma_n = 0;               // shear kinds [MPa], < 0
   double travel = 0;                // tension: final opening; shear: final slip [mm]
   std::vector<double> amplitudes;   // cyclic_shear: slip amplitudes [mm], one cycle each, about 0
+  std::vector<double> path;         // unloading-reloading: the abscissa's corners after 0 [mm] (then no amplitudes)
   int points = 30;                  // digitised points
   bool uplift = true;               // shear kinds: dilatancy measured
 };
@@ -30,6 +31,14 @@ struct SyntheticTest {
 // that wears the joint out (the elastic slip to the peak, then 4 GIIC/c0),
 // with dilatancy.
 std::vector<SyntheticTest> standard_programme(const Parameters& p, int points);
+
+// Tests with unloading branches, for bn and bs (calibration/unloading_rules.hpp):
+// tension unloaded three times on its softening branch (at 70, 40 and 15 %
+// of ft0) to a tenth of the way above its plastic opening and reloaded; and
+// shear at a constant tension of ft0/10 unloaded three times after the peak
+// (where about 15, 30 and 45 % of the strength is gone) to 0.4 of the slip
+// and reloaded, ending at the last unloading's slip, before it separates.
+std::vector<SyntheticTest> unloading_programme(const Parameters& p, int points);
 
 // The law's curve, dense (about 600 increments), resampled at `points` points
 // equally spaced in arc length on the chart's scaled axes (each axis divided

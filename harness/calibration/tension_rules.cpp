@@ -112,8 +112,9 @@ TensionRules tension_rules(const std::vector<TestCurve>& curves) {
   std::vector<double> ex, ey;
   std::vector<Point> pts;
   double peak_sum = 0, drop_x_sum = 0, area = 0, tension_curves = 0;
-  for (const TestCurve& c : curves) {
-    if (c.shear()) continue;
+  for (const TestCurve& curve : curves) {
+    if (curve.shear()) continue;
+    const TestCurve c = envelope_of(curve);
     elastic_points(c, ex, ey);
     const size_t end = first_branch_end(c), p = index_of_peak(c.y, end);
     // Where the curve drops most between two points: after a snap-back the
@@ -148,6 +149,8 @@ TensionRules tension_rules(const std::vector<TestCurve>& curves) {
       out.kn = {kn, Stage::direct, std::string(kClosedForm) + "the initial slope", se(0, kn)};
       out.ft0 = {f, Stage::direct, std::string(kClosedForm) + "the peak", se(1, f)};
       out.GIC = {G, Stage::direct, std::string(kClosedForm) + "the area", se(2, G)};
+      for (int i = 0; i < 3; ++i)  // of the logs, the same as of the values to first order
+        for (int j = 0; j < 3; ++j) out.correlation[i][j] = fit.cov(i, j) / std::sqrt(fit.cov(i, i) * fit.cov(j, j));
       return out;
     }
   }
@@ -159,8 +162,9 @@ TensionRules tension_rules(const std::vector<TestCurve>& curves) {
   for (size_t i = 0; i < ex.size(); ++i) ssr += std::pow(ey[i] - kn0.value * ex[i], 2);
   const double noise = std::sqrt(ssr / double(ex.size())), floor = std::max(3 * noise, 1e-3 * out.ft0.value);
   std::vector<Point> tail_pts;
-  for (const TestCurve& c : curves) {
-    if (c.shear()) continue;
+  for (const TestCurve& curve : curves) {
+    if (curve.shear()) continue;
+    const TestCurve c = envelope_of(curve);
     const size_t end = first_branch_end(c);
     for (size_t i = index_of_peak(c.y, end) + 1; i < end; ++i)
       if (c.y[i] > floor) tail_pts.push_back({c.x[i], c.y[i]});

@@ -27,10 +27,11 @@ namespace mortar::harness {
 
 struct TensionRules {
   CalibratedParameter kn, ft0, GIC;
+  double correlation[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // of kn, ft0, GIC where fitted together
   std::vector<std::string> notes;  // a snap-back and what it left determined
 };
 
-// Every tension curve's first branch. InputError when fewer than 2 points lie
+// Every tension curve's loading envelope (its virgin curve). InputError when fewer than 2 points lie
 // on the elastic branch.
 TensionRules tension_rules(const std::vector<TestCurve>& curves);
 

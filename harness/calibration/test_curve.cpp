@@ -20,6 +20,7 @@ namespace mortar::harness {
 const char* test_kind_name(TestKind k) {
   switch (k) {
     case TestKind::tension: return "tension";
+    case TestKind::cyclic_tension: return "cyclic_tension";
     case TestKind::shear: return "shear";
     case TestKind::cyclic_shear: return "cyclic_shear";
   }
@@ -57,15 +58,17 @@ Metadata read_metadata(const std::string& path) {
 TestKind parse_kind(const std::string& path, const Metadata& m) {
   if (!m.kind_line)
     throw InputError(path + ": states no kind of test: a test curve needs a line '# kind: tension', "
-                            "'# kind: shear' or '# kind: cyclic_shear'");
-  for (TestKind k : {TestKind::tension, TestKind::shear, TestKind::cyclic_shear})
+                            "'# kind: cyclic_tension', '# kind: shear' or '# kind: cyclic_shear'");
+  for (TestKind k : {TestKind::tension, TestKind::cyclic_tension, TestKind::shear, TestKind::cyclic_shear})
     if (m.kind == test_kind_name(k)) return k;
   throw InputError(path + ":" + std::to_string(m.kind_line) + ": kind '" + m.kind +
-                   "' is not one of tension, shear, cyclic_shear");
+                   "' is not one of tension, cyclic_tension, shear, cyclic_shear");
 }
 
 // "-0.5 MPa": the number and its unit, which must be MPa (never converted).
-double parse_sigma_n(const std::string& path, const Metadata& m) {
+// A monotonic shear test is at constant compression; a cyclic one may be at
+// constant tension, where its unloading branches show the crack slip (bs).
+double parse_sigma_n(const std::string& path, const Metadata& m, TestKind kind) {
   const std::string where = path + ":" + std::to_string(m.sigma_line);
   std::istringstream in(m.sigma_n);
   std::string number, unit, extra;
@@ -76,14 +79,18 @@ double parse_sigma_n(const std::string& path, const Metadata& m) {
     throw InputError(where + ": sigma_n '" + m.sigma_n + "' must be a finite number followed by its unit, e.g. '-0.5 MPa'");
   if ((unit != "MPa" && unit != "N/mm^2") || !extra.empty())
     throw InputError(where + ": sigma_n '" + m.sigma_n + "' must state its unit as MPa (or N/mm^2); the reader never converts");
-  if (!(value < 0))
-    throw InputError(where + ": sigma_n = " + number + " MPa violates the rule: a shear test at constant compression, "
-                     "sigma_n < 0 (law signs: tension positive)");
+  if (kind == TestKind::cyclic_shear ? value == 0 : !(value < 0))
+    throw InputError(where + ": sigma_n = " + number + " MPa violates the rule: " +
+                     (kind == TestKind::cyclic_shear
+                          ? "a cyclic shear test at constant compression (sigma_n < 0) or tension (sigma_n > 0, below "
+                            "ft0), not 0"
+                          : "a shear test at constant compression, sigma_n < 0 (law signs: tension positive; a test at "
+                            "constant tension with unloading branches is kind cyclic_shear)"));
   return value;
 }
 
 void check_columns(const CsvTable& t, TestKind kind) {
-  const std::vector<std::string> allowed = kind == TestKind::tension
+  const std::vector<std::string> allowed = kind == TestKind::tension || kind == TestKind::cyclic_tension
                                                ? std::vector<std::string>{"opening_mm", "sigma_MPa"}
                                                : std::vector<std::string>{"slip_mm", "tau_MPa", "uplift_mm"};
   for (const std::string& h : t.header)
@@ -109,7 +116,7 @@ TestCurve read_test_curve(const std::string& path) {
   if (!c.shear() && m.sigma_line)
     throw InputError(path + ":" + std::to_string(m.sigma_line) +
                      ": a tension curve has no constant normal stress; remove the sigma_n line");
-  if (c.shear()) c.sigma_n = parse_sigma_n(path, m);
+  if (c.shear()) c.sigma_n = parse_sigma_n(path, m, c.kind);
   const CsvTable t = read_csv(path);
   check_columns(t, c.kind);
   c.x = t.values(c.shear() ? "slip_mm" : "opening_mm");
@@ -118,12 +125,13 @@ TestCurve read_test_curve(const std::string& path) {
   if (c.x.size() < 4)
     throw InputError(path + ": " + std::to_string(c.x.size()) + " points; a curve needs at least 4");
   check_curve_values(c);  // before the order: a negative slip is a sign mistake
-  if (c.kind != TestKind::cyclic_shear)
+  if (!c.cycles())
     for (size_t i = 1; i < c.x.size(); ++i)
       if (c.x[i] < c.x[i - 1])
         throw InputError(path + ": row " + std::to_string(i + 1) + ": " + (c.shear() ? "slip" : "opening") + " " +
                          std::to_string(c.x[i]) + " mm is below the row before (" + std::to_string(c.x[i - 1]) +
-                         " mm): a monotonic test's abscissa never decreases (cyclic tests: kind cyclic_shear)");
+                         " mm): a monotonic test's abscissa never decreases (tests with unloading: kind cyclic_tension or "
+                         "cyclic_shear)");
   return c;
 }
 

@@ -5,8 +5,10 @@
 // skips the comment lines); it is documented in calibration_data/README.md
 // and harness/README.md:
 //
-//   # kind: shear                 tension | shear | cyclic_shear
+//   # kind: shear                 tension | cyclic_tension | shear | cyclic_shear
 //   # sigma_n: -0.5 MPa           shear kinds only; law signs, compression < 0
+//                                 (cyclic_shear may hold a tension, > 0: its
+//                                 unloading branches are open and give bs)
 //   slip_mm,tau_MPa,uplift_mm     tension: opening_mm,sigma_MPa
 //
 // Units are part of the column names and of the sigma_n line; the reader
@@ -18,19 +20,21 @@
 
 namespace mortar::harness {
 
-enum class TestKind { tension, shear, cyclic_shear };
+enum class TestKind { tension, cyclic_tension, shear, cyclic_shear };
 const char* test_kind_name(TestKind k);
 
 struct TestCurve {
   std::string file;  // where it was read from ("" when made in memory)
   std::string name;  // file stem: names the curve in the report and the plots
   TestKind kind = TestKind::shear;
-  double sigma_n = 0;         // constant normal stress of a shear test [MPa], law signs (< 0)
+  double sigma_n = 0;         // constant normal stress of a shear test [MPa], law signs (compression < 0)
   std::vector<double> x;      // opening (tension) or slip (shear) [mm], in test order
   std::vector<double> y;      // sigma_n (tension) or tau (shear) [MPa]
   std::vector<double> uplift; // normal opening since the start of shearing [mm]; empty when not measured
 
-  bool shear() const { return kind != TestKind::tension; }
+  bool shear() const { return kind == TestKind::shear || kind == TestKind::cyclic_shear; }
+  // Unloading-reloading or reversals: the abscissa may decrease.
+  bool cycles() const { return kind == TestKind::cyclic_tension || kind == TestKind::cyclic_shear; }
   bool has_uplift() const { return !uplift.empty(); }
 };
 

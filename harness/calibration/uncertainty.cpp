@@ -9,14 +9,16 @@
 
 namespace mortar::harness {
 
-Uncertainty uncertainty_from(const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
+Uncertainty uncertainty_from(const FitResult& fit) {
+  const Eigen::MatrixXd& J = fit.jacobian;
+  const Eigen::VectorXd& r = fit.residuals;
   Uncertainty u;
   const long P = J.cols();
   u.dof = static_cast<int>(J.rows() - P);
   u.s2 = u.dof > 0 ? r.squaredNorm() / u.dof : NAN;
   // Pseudo-inverse through the SVD: a singular direction left in J gives
   // infinite errors on the parameters in it, not a wrong finite number.
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinU | Eigen::ComputeThinV);
   const Eigen::VectorXd sv = svd.singularValues();
   Eigen::VectorXd inv2(P);
   for (long i = 0; i < P; ++i) inv2[i] = sv[i] > kSingular * kSingular * sv[0] ? 1 / (sv[i] * sv[i]) : INFINITY;
@@ -30,6 +32,15 @@ Uncertainty uncertainty_from(const Eigen::MatrixXd& J, const Eigen::VectorXd& r)
     cov += inv2[i] * svd.matrixV().col(i) * svd.matrixV().col(i).transpose();
   }
   cov *= u.s2;
+  // The direct values the fit holds carry their own errors: to first order
+  // they move the optimum by G = -J^+ J_d per unit, so their covariance C_d
+  // adds G C_d G^T (harness/README.md, calibrate: Uncertainty).
+  if (fit.direct_jacobian.cols() > 0) {
+    Eigen::VectorXd inv(P);
+    for (long i = 0; i < P; ++i) inv[i] = std::isinf(inv2[i]) ? 0 : 1 / sv[i];
+    const Eigen::MatrixXd G = -(svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose() * fit.direct_jacobian);
+    cov += G * fit.direct_covariance * G.transpose();
+  }
   u.std_error = cov.diagonal().cwiseSqrt();
   u.correlation = Eigen::MatrixXd::Identity(P, P);
   for (long i = 0; i < P; ++i)

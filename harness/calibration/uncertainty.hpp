@@ -34,7 +34,9 @@ struct Uncertainty {
   int dof = 0;                   // N - P
 };
 
-Uncertainty uncertainty_from(const Eigen::MatrixXd& jacobian, const Eigen::VectorXd& residuals);
+// The fit's own covariance plus what the direct values it holds carry into
+// it (two stages: their errors taken as independent of the fit's residuals).
+Uncertainty uncertainty_from(const FitResult& fit);
 
 // Unknowns that the data cannot separate: while the scaled Jacobian (columns
 // times `values`) is singular (kSingular), the unknown with the largest share

@@ -133,5 +133,5 @@ TEST_CASE("direct rules need enough normal stresses", "[calibration]") {
   const Parameters p = testing::van_der_pluijm(-0.5);
   std::vector<TestCurve> curves = curves_of(p, 0.0);
   curves.resize(2);  // tension and one shear curve
-  CHECK_THROWS_WITH(apply_direct_rules(curves), Catch::Contains("shear curves at 1 normal stress(es)"));
+  CHECK_THROWS_WITH(apply_direct_rules(curves), Catch::Contains("shear curves at 1 compressive normal stress(es)"));
 }

@@ -36,7 +36,7 @@ TEST_CASE("bad test curves are errors naming the rule", "[calibration]") {
     const char *name, *text, *message;
   } bad[] = {
       {"no_kind", "slip_mm,tau_MPa\n", "states no kind of test"},
-      {"bad_kind", "# kind: torsion\nslip_mm,tau_MPa\n", ":1: kind 'torsion' is not one of tension, shear, cyclic_shear"},
+      {"bad_kind", "# kind: torsion\nslip_mm,tau_MPa\n", ":1: kind 'torsion' is not one of tension, cyclic_tension, shear, cyclic_shear"},
       {"no_sigma", "# kind: shear\nslip_mm,tau_MPa\n", "needs its constant normal stress"},
       {"sigma_unit", "# kind: shear\n# sigma_n: -0.5 kPa\nslip_mm,tau_MPa\n", "must state its unit as MPa"},
       {"sigma_sign", "# kind: shear\n# sigma_n: 0.5 MPa\nslip_mm,tau_MPa\n", "sigma_n = 0.5 MPa violates the rule"},
