@@ -189,18 +189,22 @@ void coverage_study() {
   }
 }
 
+// Each curve as DIR/<name>.csv with the comment lines first.
+void write_curves(const std::string& dir, const std::vector<TestCurve>& curves, const std::vector<std::string>& comments) {
+  for (const TestCurve& c : curves) write_test_curve(dir + "/" + c.name + ".csv", c, comments);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IONBF, 0);
   if (argc == 3 && !std::strcmp(argv[1], "example")) {
     const Parameters p = testing::van_der_pluijm(-0.5);
-    for (const TestCurve& c : curves_of(same(p), 0.02, 30, 2024))
-      write_test_curve(std::string(argv[2]) + "/" + c.name + ".csv", c,
-                       {"SYNTHETIC, not experimental: made by calibration_study example from the law with",
-                        "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa), resampled at 30 points",
-                        "equally spaced in arc length on the chart's scaled axes, plus Gaussian noise of 2 %",
-                        "of the curve's largest value (seed 2024). See README.md here."});
+    write_curves(argv[2], curves_of(same(p), 0.02, 30, 2024),
+                 {"SYNTHETIC, not experimental: made by calibration_study example from the law with",
+                  "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa), resampled at 30 points",
+                  "equally spaced in arc length on the chart's scaled axes, plus Gaussian noise of 2 %",
+                  "of the curve's largest value (seed 2024). See README.md here."});
     return 0;
   }
   if (argc == 2 && !std::strcmp(argv[1], "recovery")) {
@@ -229,12 +233,11 @@ int main(int argc, char** argv) {
   if ((argc == 2 || argc == 3) && !std::strcmp(argv[1], "unloading")) {
     const Parameters p = unloading_truth();
     if (argc == 3) {
-      for (const TestCurve& c : unloading_curves(p, 0.02, 2025, 60))
-        write_test_curve(std::string(argv[2]) + "/" + c.name + ".csv", c,
-                         {"SYNTHETIC, not experimental: made by calibration_study unloading from the law with",
-                          "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa) but bn = 6, bs = 2, resampled",
-                          "in arc length on the chart's scaled axes with the reversals among the points, plus",
-                          "Gaussian noise of 2 % of the curve's largest value (seed 2025). See README.md here."});
+      write_curves(argv[2], unloading_curves(p, 0.02, 2025, 60),
+                   {"SYNTHETIC, not experimental: made by calibration_study unloading from the law with",
+                    "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa) but bn = 6, bs = 2, resampled",
+                    "in arc length on the chart's scaled axes with the reversals among the points, plus",
+                    "Gaussian noise of 2 % of the curve's largest value (seed 2025). See README.md here."});
       return 0;
     }
     std::printf("| seed | noise | points | bn (6) | bs (2) | GIIC (0.058) | RMS | verdict |\n"
