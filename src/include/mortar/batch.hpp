@@ -25,10 +25,10 @@ struct ElasticLaneResult : ElasticEnd<D> {
 inline ElasticLaneResult elastic_increment_lanes(const Model& M, const ElasticLanes& y) {
   const Mask open = y.h != 0.0;
   ElasticLaneResult r;
-  const Mask proved = elastic_end(M, y, open, M.tan_phi0, M.cohesion_over_tan_phi0, r);
   // An open joint with complete normal damage may move delta_p_n: left to
   // the per-point path, which reads delta_cr_n.
-  r.elastic = y.candidate && !(open && y.dn >= 1.0) && proved;
+  const Mask taken = y.candidate && !(open && y.dn >= 1.0);
+  r.elastic = elastic_end(M, y, open, taken, M.tan_phi0, M.cohesion_over_tan_phi0, r);
   return r;
 }
 #endif

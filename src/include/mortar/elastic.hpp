@@ -117,14 +117,17 @@ struct ElasticEnd {
 };
 
 // The kernel: the end of one elastic segment over all of d, and whether the
-// increment is proved elastic (regime kept, start and end tractions inside
-// the surface by more than FTOL, a finite end) for a surface of friction
-// tan(phi) = t and C / tan(phi) = C_t. `open` is h as a bool or a mask.
+// increment is proved elastic (the caller's conditions `taken`, regime kept,
+// start and end tractions inside the surface by more than FTOL, a finite end)
+// for a surface of friction tan(phi) = t and C / tan(phi) = C_t. `open` and
+// `taken` are bools or masks. The tests come before the end values: in the
+// lanes fewer vectors are then live at once.
 template <class T, class B>
-B elastic_end(const Model& M, const ElasticStart<T>& y, B open, double t, double C_t, ElasticEnd<T>& r) {
+MORTAR_KERNEL_INLINE B elastic_end(const Model& M, const ElasticStart<T>& y, B open, B taken, double t, double C_t,
+                                   ElasticEnd<T>& r) {
   const Parameters& p = M.p;
   const T e_n = y.separation[0] - y.plastic[0];
-  const B kept = regime_kept(open, e_n, e_n + y.d[0], boundary_eps_of(M, y.separation[0], y.plastic[0]));
+  const B kept = taken && regime_kept(open, e_n, e_n + y.d[0], boundary_eps_of(M, y.separation[0], y.plastic[0]));
   const T s_raw = 1.0 - y.wI / p.GIC - y.wII / p.GIIC;
   const T s = 0.0 < s_raw ? s_raw : T{};  // Eq. 5: max(0, s_raw)
   const T alpha = s * 0.5 * (C_t - p.ft0 * t), beta = s * 0.5 * (C_t + p.ft0 * t);
@@ -134,6 +137,10 @@ B elastic_end(const Model& M, const ElasticStart<T>& y, B open, double t, double
     const T e0 = y.separation[i] - y.plastic[i];
     start[i] = K[i] * e0;
     end[i] = K[i] * (e0 + y.d[i]);
+  }
+  const B inside = kept && inside_by_bounds(M, alpha, beta, t, start[0], start[1], start[2]) &&
+                   inside_by_bounds(M, alpha, beta, t, end[0], end[1], end[2]);
+  for (int i = 0; i < 3; ++i) {
     r.separation[i] = y.separation[i] + y.d[i];
     e[i] = r.separation[i] - y.plastic[i];
   }
@@ -141,8 +148,7 @@ B elastic_end(const Model& M, const ElasticStart<T>& y, B open, double t, double
   r.energy = elastic_energy_of(r.traction, e);
   const T sum = r.separation[0] + r.separation[1] + r.separation[2] +
                 (r.traction[0] + r.traction[1] + r.traction[2]) + r.energy;
-  return kept && inside_by_bounds(M, alpha, beta, t, start[0], start[1], start[2]) &&
-         inside_by_bounds(M, alpha, beta, t, end[0], end[1], end[2]) && sum - sum == 0.0;
+  return inside && sum - sum == 0.0;
 }
 
 // The shortcut for one point from a state the rules accept: true, the
@@ -161,7 +167,7 @@ inline bool elastic_increment(const Model& M, State& state, const Vec3& d, Incre
   const double t = worn ? tan_phi_of(M, state.wIII) : M.tan_phi0;
   const double C_t = worn ? M.cohesion_term / t : M.cohesion_over_tan_phi0;
   ElasticEnd<double> r;
-  if (!elastic_end(M, y, state.open, t, C_t, r)) return false;
+  if (!elastic_end(M, y, state.open, true, t, C_t, r)) return false;
   state.separation = Vec3(r.separation[0], r.separation[1], r.separation[2]);
   res.traction = Vec3(r.traction[0], r.traction[1], r.traction[2]);
   res.elastic_energy = r.energy;

@@ -15,6 +15,15 @@
 #define MORTAR_ELASTIC_LANES 0
 #endif
 
+// The elastic kernel's templates inline into each caller, so that its inputs
+// and results stay in registers; GCC's size limits would keep one copy out
+// of line, called through memory.
+#if defined(__GNUC__)
+#define MORTAR_KERNEL_INLINE inline __attribute__((always_inline))
+#else
+#define MORTAR_KERNEL_INLINE inline
+#endif
+
 namespace mortar {
 
 inline double abs_of(double x) { return std::abs(x); }
