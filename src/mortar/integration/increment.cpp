@@ -126,10 +126,10 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
 
 // Where the secant trial from a point on the surface that unloads first
 // comes back to it. F is convex along the trial (Eq. 2: |(alpha, tau)| plus
-// a linear term), so its slope changes sign once, at the minimum: bisection
-// on the slope until a fraction lies inside by more than FTOL, then Pegasus
-// from there; a dip that stays within FTOL ends at the minimum, where a
-// finely cut path turns plastic (docs/model.md 7.1).
+// a linear term), so its slope changes sign once, at the minimum: where the
+// scan misses, bisection on the slope until a fraction lies inside by more
+// than FTOL, then Pegasus from there; a dip that stays within FTOL ends at
+// the minimum, where a finely cut path turns plastic (docs/model.md 7.1).
 double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
                                      const Surface& S, bool& touches) const {
   auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
@@ -149,6 +149,7 @@ double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& 
     const double slope = flow_of(M_, K.cwiseProduct(e0 + a * rest), S, K).dF.dot(dsig);
     (slope < 0 ? lo : hi) = a;
   }
+  if (!(hi < frac)) return 0;  // no minimum inside (round-off of the band): substeps from the start
   touches = true;
   return hi;
 }
