@@ -82,7 +82,6 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
     return frac;
   }
   double a_y = 0;
-  bool touches = false;  // the secant trial only touches the surface at a_y (reentry)
   const bool relaxed = F0 > tol0 && scheme_.traits.relaxes_start_outside;
   if (relaxed) {
     if (!relax(M_, P_, st_, false)) {
@@ -95,20 +94,13 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
     // On the surface but unloading first, and outside at the end: the
     // secant trial re-enters the surface where a finely cut path yields
     // again (docs/model.md 7.1, Decision - unloading, then reloading).
-    a_y = reentry(frac, rest, K, e0, S, touches);
+    a_y = reentry(frac, rest, K, e0, S);
   }
-  if (a_y > 0 && !touches && scheme_.traits.refines_intersection)
-    a_y = refine_intersection(a_y, frac, rest, K, e0, S);
+  if (a_y > 0 && scheme_.traits.refines_intersection) a_y = refine_intersection(a_y, frac, rest, K, e0, S);
   if (a_y > 0) {
     P_.y.separation += a_y * rest;
     P_.sigma = traction_of(M_, P_.y);
-    if (tangent_ && touches) {  // no transversal crossing: a_y held fixed (docs/model.md 7.5)
-      tangent_.D->separation += a_y * (Mat3::Identity() - tangent_.D->separation);
-      secant_sensitivity(M_, P_.y, *tangent_.D);
-      tangent_.lost = true;
-    } else if (tangent_) {
-      intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
-    }
+    if (tangent_) intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
   }
   // The return at fixed separation changes the works; the elastic part only
   // the traction.
@@ -125,13 +117,13 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
 }
 
 // Where the secant trial from a point on the surface that unloads first
-// comes back to it. F is convex along the trial (Eq. 2: |(alpha, tau)| plus
-// a linear term), so its slope changes sign once, at the minimum: where the
-// scan misses, bisection on the slope until a fraction lies inside by more
-// than FTOL, then Pegasus from there; a dip that stays within FTOL ends at
-// the minimum, where a finely cut path turns plastic (docs/model.md 7.1).
+// comes back to it (0: it stays within FTOL). F is convex along the trial
+// (Eq. 2: |(alpha, tau)| plus a linear term), so its slope changes sign once,
+// at the minimum: where the scan misses, bisection on the slope until a
+// fraction lies inside by more than FTOL, then Pegasus from there
+// (docs/model.md 7.1, Decision - unloading, then reloading).
 double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
-                                     const Surface& S, bool& touches) const {
+                                     const Surface& S) const {
   auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
   auto sample = [&](double x) { return RootSample{F_at(x), yield_tolerance(M_, K.cwiseProduct(e0 + x * rest))}; };
   // A dip of more than a tenth: found on a ten-point scan, as before
@@ -149,9 +141,7 @@ double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& 
     const double slope = flow_of(M_, K.cwiseProduct(e0 + a * rest), S, K).dF.dot(dsig);
     (slope < 0 ? lo : hi) = a;
   }
-  if (!(hi < frac)) return 0;  // no minimum inside (round-off of the band): substeps from the start
-  touches = true;
-  return hi;
+  return 0;
 }
 
 // Newton on the intersection fraction, from Pegasus's answer (within FTOL)
