@@ -57,6 +57,10 @@ inline std::vector<Cell> fine_cells(const std::string& family, double h) {
   return v;
 }
 
+// Cells outside families(): the bench's cap_reversal at 1e-2 mm, one leg an
+// increment (test_splitting_cap_reversal.cpp).
+inline std::vector<Cell> bench_cells() { return {{"vdP-0.5", 1e-2, 1}}; }
+
 // The seed of a set's random path: its place in sets().
 inline unsigned seed_of(const std::string& name) {
   const std::vector<NamedSet> all = sets();

@@ -17,7 +17,8 @@
 // --implicit: instead, the implicit scheme at the default controls, 1 call
 // per increment, against the same tight reference of the default scheme.
 // Without --all-sets, h < 1e-3 runs the sets and shortened paths the tests
-// run there (fine_cells in splitting_cells.hpp).
+// run there (fine_cells in splitting_cells.hpp). Then the bench's
+// cap_reversal at 1e-2 mm (bench_cells; --family cap-reversal alone).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -110,5 +111,8 @@ int main(int argc, char** argv) {
       }
     }
   }
+  if (o.family.empty() || o.family == "cap-reversal")
+    for (const Cell& c : bench_cells())
+      if (o.set.empty() || c.set == o.set) row("cap-reversal", set_named(c.set), c, o.implicit);
   return 0;
 }

@@ -135,6 +135,12 @@ inline Path path_of(const std::string& family, const Parameters& p, unsigned see
     // every waypoint.
     const double Lo = reach * std::min(6 * u, 0.1), A = Lo / 16;
     for (int k = 1; k <= 8; ++k) w.push_back({Vec3(e0 + Lo * k / 8, k % 2 ? A : -A, 0)});
+  } else if (family == "cap-reversal") {
+    // The bench's cap_reversal (harness/bench/paths.cpp): from the origin the
+    // slip zig-zags with a tenth of the opening while the joint opens to 6 u
+    // in eight legs. Its reversals unload inside the surface and reload
+    // within one leg (docs/model.md 7.1, Decision - unloading, then reloading).
+    for (int k = 1; k <= 8; ++k) w.push_back({Vec3(reach * 6 * u * k / 8, (k % 2 ? 0.1 : -0.1) * reach * 6 * u * k / 8, 0)});
   } else if (family == "open-shear-close") {
     const double L = reach * std::min(2 * u, 0.04);
     add({Vec3(L, 0, 0), Vec3(L, L, 0), Vec3(-2 * e0, L, 0), Vec3(-2 * e0, 2 * L, 0)});

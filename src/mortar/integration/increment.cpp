@@ -91,15 +91,10 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   } else if (F0 < -tol0) {
     a_y = pegasus(sample, 0, F0, frac, F_at(frac), 100);
   } else if (on_surface && n.dot(dsig) < -1e-9 * n.norm() * dsig.norm()) {
-    // On the surface but unloading first: reloading inside the same
-    // increment? Scan for the first fraction with F < 0 (Sloan et al.).
-    for (int i = 1; i <= 10; ++i) {
-      const double a = 0.1 * i * frac;
-      if (F_at(a) < -tol_at(a)) {
-        a_y = pegasus(sample, a, F_at(a), frac, F_at(frac), 100);
-        break;
-      }
-    }
+    // On the surface but unloading first, and outside at the end: the
+    // secant trial re-enters the surface where a finely cut path yields
+    // again (docs/model.md 7.1, Decision - unloading, then reloading).
+    a_y = reentry(frac, rest, K, e0, S);
   }
   if (a_y > 0 && scheme_.traits.refines_intersection) a_y = refine_intersection(a_y, frac, rest, K, e0, S);
   if (a_y > 0) {
@@ -119,6 +114,34 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   const double done = substepper_.run((1 - a_y) * rest, at);
   at_boundary_ = substepper_.at_boundary();
   return a_y + (1 - a_y) * done;
+}
+
+// Where the secant trial from a point on the surface that unloads first
+// comes back to it (0: it stays within FTOL). F is convex along the trial
+// (Eq. 2: |(alpha, tau)| plus a linear term), so its slope changes sign once,
+// at the minimum: where the scan misses, bisection on the slope until a
+// fraction lies inside by more than FTOL, then Pegasus from there
+// (docs/model.md 7.1, Decision - unloading, then reloading).
+double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
+                                     const Surface& S) const {
+  auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
+  auto sample = [&](double x) { return RootSample{F_at(x), yield_tolerance(M_, K.cwiseProduct(e0 + x * rest))}; };
+  // A dip of more than a tenth: found on a ten-point scan, as before
+  // (its answers unchanged to the bit), then the same root by Pegasus.
+  for (int i = 1; i <= 10; ++i) {
+    const RootSample f = sample(0.1 * i * frac);
+    if (f.value < -f.tolerance) return pegasus(sample, 0.1 * i * frac, f.value, frac, F_at(frac), 100);
+  }
+  const Vec3 dsig = K.cwiseProduct(rest);
+  double lo = 0, hi = frac;
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * frac; ++it) {
+    const double a = 0.5 * (lo + hi);
+    const RootSample f = sample(a);
+    if (f.value < -f.tolerance) return pegasus(sample, a, f.value, frac, F_at(frac), 100);
+    const double slope = flow_of(M_, K.cwiseProduct(e0 + a * rest), S, K).dF.dot(dsig);
+    (slope < 0 ? lo : hi) = a;
+  }
+  return 0;
 }
 
 // Newton on the intersection fraction, from Pegasus's answer (within FTOL)

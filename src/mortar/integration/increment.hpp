@@ -42,6 +42,7 @@ class IncrementIntegration {
 
  private:
   double segment(const Vec3& rest, double frac, bool boundary);
+  double reentry(double frac, const Vec3& rest, const Vec3& K, const Vec3& e0, const Surface& S) const;
   double refine_intersection(double a, double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
                              const Surface& S) const;
   bool switch_regime();
