@@ -28,6 +28,17 @@ inline Estimate slope_through_origin(const std::vector<double>& x, const std::ve
   return k;
 }
 
+// The line y = a + b x through the points (x_i, y_i) by least squares.
+struct Line {
+  double a = 0, b = 0;
+};
+inline Line line_through(const std::vector<double>& x, const std::vector<double>& y) {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  for (size_t i = 0; i < x.size(); ++i) n += 1, sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
+  const double b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  return {(sy - b * sx) / n, b};
+}
+
 // The index of the largest of y[0, end).
 inline size_t index_of_peak(const std::vector<double>& y, size_t end) {
   return static_cast<size_t>(std::max_element(y.begin(), y.begin() + long(end)) - y.begin());

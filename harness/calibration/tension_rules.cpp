@@ -183,14 +183,11 @@ TensionRules tension_rules(const std::vector<TestCurve>& curves) {
     return out;
   }
   // Start of the tail: ln sigma = ln A - r d_in by unweighted regression.
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (const Point& q : tail_pts) {
-    const double x = q.d - q.sigma / out.kn.value, y = std::log(q.sigma);
-    n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+  std::vector<double> d_in, ln_sigma;
+  for (const Point& q : tail_pts) d_in.push_back(q.d - q.sigma / out.kn.value), ln_sigma.push_back(std::log(q.sigma));
+  const Line start = line_through(d_in, ln_sigma);
   Eigen::VectorXd t2(2);
-  t2 << (sy - slope * sx) / n, std::log(std::max(-slope, 1e-6 * out.ft0.value / bound));
+  t2 << start.a, std::log(std::max(-start.b, 1e-6 * out.ft0.value / bound));
   const Model model = tail(tail_pts, out.kn.value);
   const LeastSquares fit = least_squares(model, t2, long(tail_pts.size()));
   const double r = std::exp(fit.theta[1]), G = out.ft0.value / r;

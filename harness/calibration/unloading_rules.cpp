@@ -3,20 +3,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "calibration/curve_reading.hpp"
+
 namespace mortar::harness {
 
 namespace {
-
-// The line t = a + b x through the points by least squares.
-struct Line {
-  double a = 0, b = 0;
-};
-Line line_through(const std::vector<double>& x, const std::vector<double>& y) {
-  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
-  for (size_t i = 0; i < x.size(); ++i) n += 1, sx += x[i], sy += y[i], sxx += x[i] * x[i], sxy += x[i] * y[i];
-  const double b = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-  return {(sy - b * sx) / n, b};
-}
 
 UnloadingBranch read_branch(const TestCurve& c, size_t start, size_t end, double k) {
   UnloadingBranch br;
