@@ -16,6 +16,7 @@ namespace mortar::harness {
 
 struct CalibrationRun {
   DirectResult direct;
+  Calibration start;  // where the one set's fit started: the rules' values or a raised start
   FitResult one_set;
   Uncertainty one_set_uncertainty;
   Calibration final;  // the one set, with errors and stages
