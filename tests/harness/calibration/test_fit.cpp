@@ -137,8 +137,8 @@ TEST_CASE("calibration recovers a set with residual dilatancy (psir > 0)", "[cal
 // tau removed). The hyperbola through the remaining peaks reads phi0 low, and
 // the fit from the rules' start stalled at an RMS misfit of about 0.18 with
 // the strengths off by many standard errors; the fit from a raised phi0
-// (pipeline.cpp) must reach the noise (2 %) with every fitted strength and
-// wear parameter within three of its standard errors. The curves are the
+// (pipeline.cpp) must reach the noise (2 %), be accepted, and give every
+// fitted strength and wear parameter within three of its standard errors. The curves are the
 // coverage study's first draw (calibration_study coverage).
 TEST_CASE("calibration without the peak samples reaches the noise", "[calibration][full-size]") {
   const Parameters truth = testing::van_der_pluijm(-0.5);
@@ -146,7 +146,8 @@ TEST_CASE("calibration without the peak samples reaches the noise", "[calibratio
       calibrate_curves(without_shear_peaks(curves_of({truth, truth, truth, truth}, 5010, 0.02)), CalibrationSettings{});
   INFO("RMS misfit " << r.one_set.rms << ", start phi0 " << r.start["phi0"].value);
   CHECK(r.one_set.rms < 0.03);
-  for (const char* name : {"c0", "phi0", "phir", "GIIC", "psi0"}) {
+  CHECK(r.one_set_verdict.accepted());
+  for (const char* name : {"c0", "phi0", "phir", "GIIC", "m", "n", "psi0"}) {
     const CalibratedParameter& e = r.final[name];
     const double t = parameter_at(truth, parameter_index(name));
     INFO(name << " = " << e.value << " +- " << e.std_error << ", true " << t);
