@@ -56,8 +56,8 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   r.final = r.start;
   if (raised_by != 1) {
     char note[200];
-    std::snprintf(note, sizeof note, "the fit from the rules' start stalled (RMS misfit above 0.05); kept: the fit from "
-                  "phi0 raised by %.0f %% (%g deg), m, n, psi0 recomputed from it", 100 * (raised_by - 1),
+    std::snprintf(note, sizeof note, "the fit from the rules' start ended with an RMS misfit above 0.05; kept: the fit "
+                  "of lower misfit from phi0 raised by %.0f %% (%g deg), m, n, psi0 recomputed from it", 100 * (raised_by - 1),
                   r.start["phi0"].value);
     r.final.notes.push_back(note);
   }
