@@ -39,9 +39,10 @@ CalibrationRun calibrate_curves(const std::vector<TestCurve>& curves, const Cali
   // A fit from the rules' start that ends with an RMS misfit above 0.05 (the
   // acceptance limit) may have stalled in a local minimum: where the peaks
   // are not sampled the rules read phi0 low (measured: 15 of 20 noisy draws
-  // stopped at 0.17-0.20 against 0.02). It is also fitted from phi0 raised
+  // stopped at 0.166-0.200 against 0.02). It is also fitted from phi0 raised
   // by 5 and 10 % (direct_rules.hpp), and the converged fit of lowest misfit
-  // kept. A raised start the law rejects (c0 > ft0 tan phi0) is no candidate.
+  // kept. A raised start the law rejects (it needs c0 > ft0 tan phi0) is no
+  // candidate.
   double raised_by = 1;
   if (r.one_set.rms > 0.05)
     for (double factor : {1.05, 1.10}) try {
