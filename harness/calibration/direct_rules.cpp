@@ -159,17 +159,15 @@ double point_scatter(const std::vector<TestCurve>& curves, double ks) {
   return std::sqrt(ssr / double(std::max<size_t>(x.size() - 1, 1)));
 }
 
-// Starting values of the fit's softening and wear parameters:
+// Starting values of the fit's softening parameters:
 //  - GIIC: the work beyond the residual, the integral of (tau - tau_r) over
 //    the plastic slip x - tau/ks after the peak (Eq. 8 summed to s = 0), or
 //    without a monotonic shear curve 10 GIC (Table 1's ratio), or 0.05 N/mm;
-//  - m, n: the friction is worn out (m wIII ~ 4) over the slip of the curves,
-//    with wIII ~ |sigma_n| (tan phi0 - tan phir) slip / 2 (Eq. 9);
 //  - bn, bs: Table 1's values (every set there has 10 and 3), replaced by
 //    what unloading branches give where the data hold them (unloading_rules.hpp).
 void softening_start(const std::vector<TestCurve>& curves, bool tension, Calibration& cal) {
-  const double ks = cal["ks"].value, drop = std::tan(cal["phi0"].value * kDegree) - std::tan(cal["phir"].value * kDegree);
-  double work = 0, wear = 0;
+  const double ks = cal["ks"].value;
+  double work = 0;
   int n = 0;
   for (const TestCurve& c : curves) {
     if (c.kind != TestKind::shear) continue;
@@ -177,15 +175,25 @@ void softening_start(const std::vector<TestCurve>& curves, bool tension, Calibra
     double w = 0;
     for (size_t i = index_of_peak(c.y, c.y.size()) + 1; i < c.x.size(); ++i)
       w += 0.5 * (c.y[i] + c.y[i - 1] - 2 * tau_r) * ((c.x[i] - c.y[i] / ks) - (c.x[i - 1] - c.y[i - 1] / ks));
-    work += w, wear += -c.sigma_n * std::max(drop, 1e-3) * c.x.back() / 2, ++n;
+    work += w, ++n;
   }
   const double GIIC = n ? std::max(work / n, 1e-4) : tension ? 10 * cal["GIC"].value : 0.05;
-  const double m = n ? 4 * n / wear : 1000;
   cal["GIIC"] = {GIIC, Stage::fit, "starting value: work beyond the residual (Eq. 8)"};
-  cal["m"] = {m, Stage::fit, "starting value: friction worn over the curves (Eq. 9)"};
-  cal["n"] = {m, Stage::fit, "starting value: as m"};
   cal["bn"] = {10, Stage::fit, "starting value: Table 1"};
   cal["bs"] = {3, Stage::fit, "starting value: Table 1"};
+}
+
+// Starting values of m and n: the friction is worn out (m wIII ~ 4) over the
+// slip of the curves, with wIII ~ |sigma_n| (tan phi0 - tan phir) slip / 2 (Eq. 9).
+void wear_start(const std::vector<TestCurve>& curves, Calibration& cal) {
+  const double drop = std::tan(cal["phi0"].value * kDegree) - std::tan(cal["phir"].value * kDegree);
+  double wear = 0;
+  int n = 0;
+  for (const TestCurve& c : curves)
+    if (c.kind == TestKind::shear) wear += -c.sigma_n * std::max(drop, 1e-3) * c.x.back() / 2, ++n;
+  const double m = n ? 4 * n / wear : 1000;
+  cal["m"] = {m, Stage::fit, "starting value: friction worn over the curves (Eq. 9)"};
+  cal["n"] = {m, Stage::fit, "starting value: as m"};
 }
 
 // The dilatancy right after each peak: between the peak and the second point
@@ -214,7 +222,21 @@ void dilatancy_start(const std::vector<TestCurve>& curves, Calibration& cal) {
   cal["psir"] = {0, Stage::fit, "placeholder 0 (no residual dilatancy); fitted where the uplift shows it"};
 }
 
+// The starting values that follow the strengths (m, n, psi0, psir): one rule
+// for the rules' start and for the raised starts.
+void strength_dependent_start(const std::vector<TestCurve>& curves, Calibration& cal) {
+  wear_start(curves, cal);
+  dilatancy_start(curves, cal);
+}
+
 }  // namespace
+
+Calibration raised_start(const std::vector<TestCurve>& curves, const Calibration& rules, double factor) {
+  Calibration cal = rules;
+  cal["phi0"].value *= factor;
+  strength_dependent_start(curves, cal);
+  return cal;
+}
 
 void fill_placeholders(bool tension, Calibration& cal) {
   if (!tension) {
@@ -257,7 +279,7 @@ DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {
   hyperbola_rules(levels, tension, sd, cal);
   softening_start(curves, tension, cal);
   unloading_rules(curves, cal);
-  dilatancy_start(curves, cal);
+  strength_dependent_start(curves, cal);
   fill_placeholders(tension, cal);
   return r;
 }

@@ -43,6 +43,12 @@ struct DirectResult {
 // tension curve (ft0 then comes from the hyperbola alone).
 DirectResult apply_direct_rules(const std::vector<TestCurve>& curves);
 
+// Another start for the fit (calibration/pipeline.cpp): the rules' start
+// with c0 kept, phi0 multiplied by `factor`, and m, n, psi0 recomputed from
+// it by the same rules. Where the peaks are not sampled the hyperbola reads
+// phi0 low, and the fit from the rules' start can stall far from the data.
+Calibration raised_start(const std::vector<TestCurve>& curves, const Calibration& rules, double factor);
+
 // The placeholders that follow other parameters (kn and GIC without a tension
 // curve, psir): set by the rules, and again after the fit has moved GIIC.
 void fill_placeholders(bool tension, Calibration& cal);

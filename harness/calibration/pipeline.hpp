@@ -1,6 +1,7 @@
 // The whole calibration of a set of test curves, as `calibrate` runs it and
 // the tests and the recovery study check it: the direct rules, the one-set
-// fit with its uncertainty, the final parameter set, and on request the fit
+// fit with its uncertainty (from the rules' start, or from a raised phi0
+// where that fit stalls), the final parameter set, and on request the fit
 // of m and n per normal stress.
 #pragma once
 
@@ -16,6 +17,7 @@ namespace mortar::harness {
 
 struct CalibrationRun {
   DirectResult direct;
+  Calibration start;  // where the one set's fit started: the rules' values or a raised start
   FitResult one_set;
   Uncertainty one_set_uncertainty;
   Calibration final;  // the one set, with errors and stages

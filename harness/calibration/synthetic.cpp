@@ -158,4 +158,14 @@ TestCurve synthetic_curve(const Parameters& p, const SyntheticTest& t, double no
   return out;
 }
 
+std::vector<TestCurve> without_shear_peaks(std::vector<TestCurve> curves) {
+  for (TestCurve& c : curves) {
+    if (!c.shear()) continue;
+    const auto at = std::max_element(c.y.begin(), c.y.end()) - c.y.begin();
+    c.x.erase(c.x.begin() + at), c.y.erase(c.y.begin() + at);
+    if (c.has_uplift()) c.uplift.erase(c.uplift.begin() + at);
+  }
+  return curves;
+}
+
 }  // namespace mortar::harness

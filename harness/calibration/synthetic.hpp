@@ -49,4 +49,8 @@ std::vector<SyntheticTest> unloading_programme(const Parameters& p, int points);
 TestCurve synthetic_curve(const Parameters& p, const SyntheticTest& test, double noise, std::uint32_t seed,
                           const std::string& name);
 
+// The curves without the sample at each shear curve's largest tau: a peak
+// the test's sampling missed (the coverage study and the fit's tests).
+std::vector<TestCurve> without_shear_peaks(std::vector<TestCurve> curves);
+
 }  // namespace mortar::harness

@@ -82,7 +82,7 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
             {"Calibrated by masonry-joint calibrate from " + o.data_dir,
              "Values, standard errors and how each was set: report.md"},
             run.one_set_verdict);
-  write_fit_curves(o.out_dir, curves, run.one_set, run.direct.calibration.values(), settings.fit.simulation);
+  write_fit_curves(o.out_dir, curves, run.one_set, run.start.values(), settings.fit.simulation);
   std::ostringstream md;
   write_report(md, o.out_dir, report);
   out << terminal_text(md.str(), o.wide);

@@ -15,14 +15,14 @@ using namespace mortar::harness;
 
 namespace {
 
-// The standard programme's curves (30 points each, 1 % noise, seeds from
-// `seed`), the k-th test made with per_test[k] (tension, then sigma_n = -0.1,
-// -0.5, -1.0 MPa).
-std::vector<TestCurve> curves_of(const std::vector<Parameters>& per_test, std::uint32_t seed) {
+// The standard programme's curves (30 points each, 1 % noise unless said,
+// seeds from `seed`), the k-th test made with per_test[k] (tension, then
+// sigma_n = -0.1, -0.5, -1.0 MPa).
+std::vector<TestCurve> curves_of(const std::vector<Parameters>& per_test, std::uint32_t seed, double noise = 0.01) {
   std::vector<TestCurve> curves;
   const std::vector<SyntheticTest> plan = standard_programme(per_test[0], 30);
   for (size_t k = 0; k < plan.size(); ++k)
-    curves.push_back(synthetic_curve(per_test[k], plan[k], 0.01, seed, "c" + std::to_string(seed))), ++seed;
+    curves.push_back(synthetic_curve(per_test[k], plan[k], noise, seed, "c" + std::to_string(seed))), ++seed;
   return curves;
 }
 
@@ -131,4 +131,27 @@ TEST_CASE("calibration recovers a set with residual dilatancy (psir > 0)", "[cal
   CHECK(std::abs(c["GIIC"].value - truth.GIIC) < 0.05 * truth.GIIC);
   CHECK(c["bs"].stage == Stage::not_determined);
   CHECK(r.one_set.rms < 0.02);
+}
+
+// Issue 39: curves whose peaks are not sampled (each shear curve's largest
+// tau removed). The hyperbola through the remaining peaks reads phi0 low, and
+// the fit from the rules' start alone stalled at an RMS misfit of 0.19 (GIIC
+// a quarter of the truth, m 43 times it, neither with a standard error: 5 of
+// these 9 checks failed). From the raised starts (pipeline.cpp) the fit must
+// reach the noise (2 %), be accepted, and give every fitted strength and wear
+// parameter within three of its standard errors. The curves are the coverage
+// study's first draw (calibration_study coverage).
+TEST_CASE("calibration without the peak samples reaches the noise", "[calibration][full-size]") {
+  const Parameters truth = testing::van_der_pluijm(-0.5);
+  const CalibrationRun r =
+      calibrate_curves(without_shear_peaks(curves_of({truth, truth, truth, truth}, 5010, 0.02)), CalibrationSettings{});
+  INFO("RMS misfit " << r.one_set.rms << ", start phi0 " << r.start["phi0"].value);
+  CHECK(r.one_set.rms < 0.03);
+  CHECK(r.one_set_verdict.accepted());
+  for (const char* name : {"c0", "phi0", "phir", "GIIC", "m", "n", "psi0"}) {
+    const CalibratedParameter& e = r.final[name];
+    const double t = parameter_at(truth, parameter_index(name));
+    INFO(name << " = " << e.value << " +- " << e.std_error << ", true " << t);
+    CHECK(std::abs(e.value - t) < 3 * e.std_error);
+  }
 }
