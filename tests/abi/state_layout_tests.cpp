@@ -41,9 +41,9 @@ Inputs inputs(int i, int n) {
 // the whole state loaded from this precision's layout for the declared state
 // count (adapter/state_storage.hpp), its tangential vectors turned by dRot,
 // the law, the whole state stored (with DEPVAR = 23: the law between
-// mortar::load_state and store_state). The routine takes its elastic path
-// (elastic_point, which writes only what an elastic increment changes)
-// wherever the elastic shortcut holds.
+// mortar::load_state and store_state). The routine stores by its elastic
+// store (which writes only what an elastic increment changes) wherever the
+// elastic shortcut holds.
 struct FullPath {
   mj_adapter::StateStorage<Real> storage;
   std::vector<Real> state;
