@@ -203,8 +203,8 @@ TEST_CASE("State array: elastic increments under turning tangents write what the
   }
 }
 
-TEST_CASE("State array: with float pairs the elastic path leaves unchanged pairs as they are and rewrites the "
-          "pairs when one is not canonical, as the full path does, bit for bit",
+TEST_CASE("State array: with float pairs the elastic store leaves unchanged pairs as they are, and a point with a "
+          "pair that is not canonical goes the full path: both as loading and storing the whole state, bit for bit",
           "[abi][state]") {
   if (kDouble) return;  // no pairs
   // After plastic slip and opening, elastic back and forth, dRot the identity
