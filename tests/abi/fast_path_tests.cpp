@@ -5,10 +5,14 @@
 // an elastic block actually goes through the lanes.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstring>
+#include <initializer_list>
+#include <limits>
 #include <vector>
 
 #include "adapter/path_counters.hpp"
+#include "mortar/failure.hpp"
 #include "mortar/parameters.hpp"
 #include "mortar/state_layout.hpp"
 #include "path_corpus.hpp"
@@ -117,4 +121,47 @@ TEST_CASE("fast paths: plain floats take the per-point shortcut, not the lanes",
   const mj_adapter::PathCounts c = b.call(-1e-5, 2e-5);
   CHECK(c.lanes == 0);
   CHECK(c.shortcut == 8);
+}
+
+TEST_CASE("fast paths: a corrupted SDV 35 is rejected on every path, the other points integrated",
+          "[fast_paths][flags]") {
+  // SDV 35 holds integration flags, a whole number from 0 to 15 (docs/model.md
+  // 3): each value below is rejected (SDV 21 = invalid_state, the state kept)
+  // on a point of a lane pair, on the tail point (the per-point shortcut) and,
+  // after a plastic call, on the full path.
+  namespace slot = mortar::slot;
+  const int n_dir = GENERATE(2, 3);
+  const Real bad = GENERATE(Real(2.5), Real(16), Real(-1), std::numeric_limits<Real>::quiet_NaN(), Real(1e9));
+  CAPTURE(n_dir, bad);
+  Block b(17, n_dir, mortar::kFlaggedStateCount);
+  b.call(0, 0);
+  b.call(-1e-5, 2e-5);
+  const int code = int(mortar::Failure::invalid_state), flags = mortar::flag_slot::integration_flags;
+  auto corrupt_and_call = [&](std::initializer_list<int> points, double dn, double ds) {
+    std::vector<Real> start = b.state;
+    for (int k : points) b.state[size_t(b.n_states) * k + flags] = start[size_t(b.n_states) * k + flags] = bad;
+    const mj_adapter::PathCounts c = b.call(dn, ds);
+    for (int k = 0; k < b.n; ++k) {
+      const Real* st = b.state.data() + size_t(b.n_states) * k;
+      const bool corrupted = std::find(points.begin(), points.end(), k) != points.end();
+      CAPTURE(k);
+      CHECK(st[slot::status] == Real(corrupted ? code : 0));
+      if (corrupted) {  // the start state kept, but for the status
+        const Real* s0 = start.data() + size_t(b.n_states) * k;
+        int changed = 0;
+        for (int i = 0; i < b.n_states; ++i) changed += i != slot::status && std::memcmp(st + i, s0 + i, sizeof(Real));
+        CHECK(changed == 0);
+      }
+    }
+    for (int k : points) b.state[size_t(b.n_states) * k + flags] = Real(0);
+    return c;
+  };
+  // Point 0 in a pair of lanes and the tail point 16: the lanes take the
+  // other fifteen, the rejected two count as the full path's.
+  const mj_adapter::PathCounts elastic = corrupt_and_call({0, 16}, -1e-5, 2e-5);
+  CHECK(elastic.lanes == 15);
+  CHECK(elastic.full == 2);
+  corrupt_and_call({}, 1e-3, 0.05);  // plastic: SDV 19 > 0 from here on
+  const mj_adapter::PathCounts full = corrupt_and_call({5}, 1e-5, 1e-4);
+  CHECK(full.full == 17);
 }

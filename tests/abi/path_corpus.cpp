@@ -6,10 +6,12 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <random>
 #include <sstream>
 
+#include "mortar/state_pairs.hpp"
 #include "random_parameters.hpp"
 #include "vuinteraction.h"
 
@@ -54,7 +56,57 @@ void random_step(std::mt19937& rng, const mortar::Parameters& p, double& d_pen, 
   }
 }
 
-std::uint64_t run_case(int n_dir, int scheme, bool turning, int n_states, unsigned seed) {
+// Slots holding what the layout never writes (the "-corrupt" cases): before
+// every fifth call one point's slot is corrupted, in turn each kind below;
+// where the routine then rejects the point (keeping the slot), the slot is
+// given back after the call, so that the point goes on.
+struct Corruption {
+  int point = -1, slot = 0;
+  Real value = 0, saved = 0;
+};
+Corruption corrupt(std::vector<Real>& state, int n_states, int step) {
+  namespace slot = mortar::slot;
+  Corruption c;
+  c.point = (step / 5) % kPoints;
+  Real* st = state.data() + size_t(n_states) * c.point;
+  const bool flags = n_states >= mortar::kFlaggedStateCount;
+  const int flag_slot = mortar::flag_slot::integration_flags;
+  const Real nan = std::numeric_limits<Real>::quiet_NaN(), inf = std::numeric_limits<Real>::infinity();
+  switch ((step / 5) % 8) {
+    case 0: c.slot = flags ? flag_slot : int(slot::open), c.value = Real(flags ? 2.5 : 0.5); break;
+    case 1: c.slot = flags ? flag_slot : int(slot::initialised), c.value = Real(16); break;
+    case 2: c.slot = flags ? flag_slot : int(slot::open), c.value = nan; break;
+    case 3: c.slot = flags ? flag_slot : int(slot::status), c.value = Real(5); break;
+    case 4: c.slot = slot::open, c.value = Real(0.5); break;
+    case 5: c.slot = slot::substeps_accepted, c.value = Real(2.5); break;  // a count's garbage: read as 2
+    case 6:
+      if (sizeof(Real) == sizeof(float) && n_states >= mortar::kPairedStateCount) {
+        // A pair consistent but not canonical (docs/model.md 3): a low part
+        // below the double sum's reach, or a -0 high part for a value 0.
+        const mortar::SlotPair p = mortar::kPairedSlots[(step / 5) % 11];
+        const float high = float(st[p.high]);
+        const float spacing = std::nextafter(std::abs(high), HUGE_VALF) - std::abs(high);
+        if (high == 0.0f) {
+          c.slot = p.high, c.value = Real(-0.0f);
+        } else {
+          c.slot = p.low, c.value = Real(spacing * std::ldexp(1.0f + std::ldexp(1.0f, -23), -20));
+        }
+      } else {
+        c.slot = slot::status, c.value = Real(1e30);  // the status's garbage: read as 0
+      }
+      break;
+    default: c.slot = slot::reference_penetration, c.value = inf; break;
+  }
+  c.saved = st[c.slot];
+  st[c.slot] = c.value;
+  return c;
+}
+void give_back(std::vector<Real>& state, int n_states, const Corruption& c) {
+  Real& x = state[size_t(n_states) * c.point + c.slot];
+  if (std::memcmp(&x, &c.value, sizeof x) == 0) x = c.saved;
+}
+
+std::uint64_t run_case(int n_dir, int scheme, bool turning, int n_states, unsigned seed, bool corrupted = false) {
   std::mt19937 rng(seed);
   const mortar::Parameters p = mj_test::random_parameters(rng);
   std::vector<Real> props(15);
@@ -90,6 +142,8 @@ std::uint64_t run_case(int n_dir, int scheme, bool turning, int n_states, unsign
       d_rot[4 * k + 1] = Real(std::sin(angle));
       d_rot[4 * k + 2] = Real(-std::sin(angle));
     }
+    Corruption c;
+    if (corrupted && step % 5 == 3) c = corrupt(state, n_states, step);
     vuinteraction_(stress.data(), flux_slv.data(), flux_mst.data(), state.data(), sed.data(), sfd.data(), scd.data(),
                    spd.data(), svd.data(), &n, &n, &n, &n_node_states, &n_nod_slv, &n_nod_mst, &n_dir, &n_states,
                    &n_props, &n_temp, &n_fields, flags, r_data, name, name, name, slave_nodes.data(),
@@ -97,6 +151,7 @@ std::uint64_t run_case(int n_dir, int scheme, bool turning, int n_states, unsign
                    dircos.data(), per_point.data(), per_point.data(), per_point.data(), dircos_sl.data(),
                    shape_slv.data(), shape_mst.data(), coord_slv.data(), coord_mst.data(), coord_slv.data(),
                    coord_mst.data(), per_point.data(), per_point.data(), field.data(), field.data(), 80, 80, 80);
+    if (c.point >= 0) give_back(state, n_states, c);
     hash.add(stress);
     hash.add(state);
     hash.add(sed);
@@ -129,6 +184,12 @@ std::vector<CaseHash> run_corpus() {
             out.push_back({name.str(), run_case(n_dir, scheme, turning, n_states, 7919u * seed++)});
           }
       }
+  for (int n_dir : {2, 3})
+    for (int n_states : layouts) {
+      std::ostringstream name;
+      name << "dir" << n_dir << "-corrupt-depvar" << n_states;
+      out.push_back({name.str(), run_case(n_dir, 1, n_dir == 3, n_states, 7919u * seed++, true)});
+    }
   return out;
 }
 

@@ -41,9 +41,9 @@ Inputs inputs(int i, int n) {
 // the whole state loaded from this precision's layout for the declared state
 // count (adapter/state_storage.hpp), its tangential vectors turned by dRot,
 // the law, the whole state stored (with DEPVAR = 23: the law between
-// mortar::load_state and store_state). The routine takes its elastic path
-// (elastic_point, which writes only what an elastic increment changes)
-// wherever the elastic shortcut holds.
+// mortar::load_state and store_state). The routine stores by its elastic
+// store (which writes only what an elastic increment changes) wherever the
+// elastic shortcut holds.
 struct FullPath {
   mj_adapter::StateStorage<Real> storage;
   std::vector<Real> state;
@@ -119,6 +119,7 @@ TEST_CASE("State array: slots beyond the routine's layout are never touched and 
   const int flags = mortar::flag_slot::integration_flags;
   OnePoint wide(m15_props(), declared), narrow(m15_props(), mortar::kStateCount);
   std::fill(wide.state.begin() + used, wide.state.end(), kSentinel);
+  wide.state[flags] = Real(0);  // SDV 35 holds flags, 0 to 15 (a sentinel there is rejected)
   const int n = 400;
   int untouched = 0, differences = 0;
   for (int i = 0; i <= n; ++i) {
@@ -134,8 +135,8 @@ TEST_CASE("State array: slots beyond the routine's layout are never touched and 
     differences += !std::equal(narrow.stress, narrow.stress + 3, wide.stress);
   }
   CHECK(untouched == n + 1);
-  // The full path wrote SDV 35 (a value that is no flags, -7.5, read as
-  // none): no fallback, no substep accepted at the floor on this path.
+  // No fallback, no substep accepted at the floor on this path: SDV 35
+  // stays 0.
   CHECK(wide.state[flags] == Real(0));
   if (kDouble) CHECK(differences == 0);
   if (!kDouble) CHECK(differences > 0);  // the pairs carry what plain floats lose
@@ -202,8 +203,8 @@ TEST_CASE("State array: elastic increments under turning tangents write what the
   }
 }
 
-TEST_CASE("State array: with float pairs the elastic path leaves unchanged pairs as they are and rewrites the "
-          "pairs when one is not canonical, as the full path does, bit for bit",
+TEST_CASE("State array: with float pairs the elastic store leaves unchanged pairs as they are, and a point with a "
+          "pair that is not canonical goes the full path: both as loading and storing the whole state, bit for bit",
           "[abi][state]") {
   if (kDouble) return;  // no pairs
   // After plastic slip and opening, elastic back and forth, dRot the identity

@@ -200,6 +200,41 @@ TEST_CASE("UINTER: a rejected increment asks for a smaller one and leaves finite
   CHECK(std::isfinite(pt.sed));
 }
 
+TEST_CASE("UINTER: a state whose adapter slots break their rules is rejected, as in the Explicit routines",
+          "[uinter][errors]") {
+  // The open and initialised flags (SDV 15, 23) 0 or 1, SDV 35 (NSTATV 35) a
+  // whole number from 0 to 15 (docs/model.md 3): otherwise the state is kept,
+  // SDV 21 = invalid_state, a smaller increment asked for.
+  struct Bad {
+    int slot;
+    double value;
+  };
+  const int flags = mortar::flag_slot::integration_flags;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const Bad bad = GENERATE_COPY(Bad{slot::open, 0.5}, Bad{slot::initialised, 2}, Bad{flags, 2.5}, Bad{flags, 16},
+                                Bad{flags, -1}, Bad{flags, nan});
+  CAPTURE(bad.slot, bad.value);
+  Point pt(3, paper_props(mortar::testing::almeida_m15()));
+  pt.n_states = mortar::kFlaggedStateCount;
+  pt.statev.assign(size_t(pt.n_states), 0.0);
+  double r[3] = {0, 0, 0};
+  const double target[3] = {-0.0002, 0.0001, 0};
+  drive(pt, r, target, 3);
+  pt.statev[size_t(bad.slot)] = bad.value;
+  StderrCapture err;
+  pt.call();
+  CHECK(pt.pnewdt == 0.5);
+  CHECK(err.text().find("invalid state") != std::string::npos);
+  CHECK(pt.out_statev[slot::status] == int(mortar::Failure::invalid_state));
+  for (int i = 0; i < pt.n_states; ++i)
+    if (i != slot::status) CHECK((pt.out_statev[size_t(i)] == pt.statev[size_t(i)] || i == bad.slot));
+  for (int i = 0; i < 3; ++i) CHECK(std::isfinite(pt.stress[i]));
+  // The same slots valid: integrated.
+  pt.statev[size_t(bad.slot)] = bad.slot == flags ? 3.0 : 1.0;
+  pt.call();
+  CHECK(pt.out_statev[slot::status] == 0);
+}
+
 TEST_CASE("UINTER: bad arguments and properties are reported and coded in SDV 21", "[uinter][errors]") {
   SECTION("a property") {
     std::vector<double> props = paper_props(mortar::testing::almeida_m15(), 20);

@@ -107,7 +107,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
           std::strcmp(mortar::failure_name(static_cast<mortar::Failure>(int(status))), "unknown") != 0))
       fail("%s: point %d: SDV 21 = %g is not one of the law's failure codes", when.c_str(), k + 1, double(status));
     ++stats.status[int(status)];
-    const char* corrupt = state_violation(s0, paired);
+    const char* corrupt = state_violation(s0, paired, flagged);
     if (corrupt) {
       ++stats.corrupt_reported;
       if (status == 0)
@@ -144,7 +144,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     // Accepted: a state that obeys every rule, grown from the incoming one.
     for (int i = 0; i < slots; ++i)
       if (!finite(double(s1[i]))) fail("%s: point %d accepted but SDV %d = %g is not finite", when.c_str(), k + 1, i + 1, double(s1[i]));
-    if (const char* v = state_violation(s1, paired)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
+    if (const char* v = state_violation(s1, paired, flagged)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
     if (s1[slot::initialised] != Real(1)) fail("%s: point %d accepted but not initialised", when.c_str(), k + 1);
     const Real ref = s0[slot::initialised] == Real(1) ? s0[slot::reference_penetration] : b.penetration[k];
     if (!same_bits(s1[slot::reference_penetration], ref)) fail("%s: point %d: reference penetration changed", when.c_str(), k + 1);

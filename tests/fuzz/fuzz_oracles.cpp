@@ -72,8 +72,8 @@ double value(const Real* s, int i, bool paired) {
 
 
 // The documented rules of an incoming state (docs/model.md section 3, the
-// law's check_state, and the adapter's flags).
-const char* state_violation(const Real* s, bool paired) {
+// law's check_state, and the adapter's flags; SDV 35 where `flagged`).
+const char* state_violation(const Real* s, bool paired, bool flagged) {
   if (paired)
     for (const mortar::SlotPair& p : mortar::kPairedSlots)
       if (!pair_belongs(s[p.high], s[p.low])) return "a low part (SDV 24-34) beyond its high part's float spacing";
@@ -88,6 +88,10 @@ const char* state_violation(const Real* s, bool paired) {
   if (!(v(slot::dissipation_damage) >= 0)) return "D_damage < 0";
   if (!(s[slot::open] == 0 || s[slot::open] == 1)) return "open flag not 0 or 1";
   if (!(s[slot::initialised] == 0 || s[slot::initialised] == 1)) return "initialised flag not 0 or 1";
+  if (flagged) {
+    const double f = double(s[mortar::flag_slot::integration_flags]);
+    if (!(f >= 0 && f <= 15 && f == std::floor(f))) return "SDV 35 not a whole number from 0 to 15";
+  }
   if (s[slot::initialised] == 1 && !finite(double(s[slot::reference_penetration]))) return "non-finite reference";
   return nullptr;
 }

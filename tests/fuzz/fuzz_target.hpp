@@ -64,7 +64,7 @@ void decode_props(Reader& r, Block& b);
 bool props_valid(const std::vector<Real>& props, int n_props);
 int owned_slots(int n_states);
 double value(const Real* s, int i, bool paired);
-const char* state_violation(const Real* s, bool paired);
+const char* state_violation(const Real* s, bool paired, bool flagged);
 
 // The checks after one call (fuzz_checks.cpp).
 void check_call(const Block& b, const Block& before, const std::string& text, int call);

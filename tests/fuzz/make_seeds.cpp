@@ -281,6 +281,18 @@ int main(int argc, char** argv) {
     corr[5] = {{0, g.slot, g.value}};
     path_seed(std::string("corrupt-") + g.name, c, pressed_shear(8, -0.001, 0.004), corr);
   }
+  // SDV 35 (DEPVAR 35) that no set of integration flags can be: rejected on
+  // every path, as the other slots' garbage is.
+  const Garbage flag_garbage[] = {
+      {"flags-2.5", 34, 2.5}, {"flags-16", 34, 16}, {"flags-minus-1", 34, -1}, {"flags-nan", 34, kNaN}};
+  for (const Garbage& g : flag_garbage) {
+    Case c;
+    c.n_block = 2;
+    c.n_states = 35;
+    std::vector<std::vector<Corruption>> corr(8);
+    corr[5] = {{0, g.slot, g.value}};
+    path_seed(std::string("corrupt-") + g.name, c, pressed_shear(8, -0.001, 0.004), corr);
+  }
   {
     Case c;  // a whole restart of garbage on a fresh point
     std::vector<std::vector<Corruption>> corr(3);

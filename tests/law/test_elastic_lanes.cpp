@@ -1,5 +1,5 @@
-// The elastic shortcut's lanes (integration/elastic_lanes.hpp) against the
-// scalar shortcut they stand in for (elastic_shortcut.hpp): every lane makes
+// The elastic shortcut's lanes (mortar/batch.hpp) against the
+// scalar shortcut they stand in for (mortar/elastic.hpp): every lane makes
 // elastic_increment()'s decision and, when it books, the same end
 // separation, traction and energy to the last bit (docs/model.md 10: the
 // answer must not depend on how points are grouped into a call).

@@ -204,18 +204,6 @@ struct ExplicitBlock {
     return mortar::Vec3((reference - pen) - s.separation[0], double(dd[1]), counts.n_dir > 2 ? double(dd[2]) : 0.0);
   }
 
-  // The adapter's own slots obey their rule: the open flag (SDV 15) and the
-  // initialised flag (SDV 23) are 0 or 1, for one point or the lanes (a
-  // mask). The law reads the open flag as a bool, so a corrupted 0.5 or NaN
-  // would silently become "open".
-  template <class T>
-  static auto flag_valid(T x) {
-    return (x == 0.0) | (x == 1.0);
-  }
-  static bool flags_valid(const Real* st) {
-    return flag_valid(st[mortar::slot::open]) & flag_valid(st[mortar::slot::initialised]);
-  }
-
   // The law's traction in Abaqus's signs: pressure positive, shear_sign * tau.
   // Always three values, the third 0 in 2D (not an output), so that the
   // callers' finite tests run over a fixed count: with a count of n_dir, GCC's
@@ -224,56 +212,6 @@ struct ExplicitBlock {
     stress_k[0] = Real(-traction[0]);
     stress_k[1] = Real(setup.shear_sign * traction[1]);
     stress_k[2] = counts.n_dir == 2 ? Real(0) : Real(setup.shear_sign * traction[2]);
-  }
-
-  // Most point-updates (the elastic shortcut, docs/architecture.md): a valid state
-  // whose increment mortar::elastic_increment proves elastic, integrated to
-  // the very result integrate_increment would return, and only the slots such
-  // an increment changes written, as integrate_point would write them
-  // (StateStorage::store_elastic). The state lives in registers here: nothing
-  // takes its address. Returns kTakesFullPath, having written nothing, for any
-  // other point, which integrate_point then integrates (loading it again);
-  // otherwise integrate_point's return value.
-  static constexpr int kTakesFullPath = -1;
-  int elastic_point(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st) const {
-    namespace slot = mortar::slot;
-    // mortar::state_valid with its finite test on the array (vector loads;
-    // the open flag, SDV 15, among the values, is 0 or 1 by flags_valid, and
-    // a float pair is finite when both its parts are, which load_elastic()'s
-    // tests of the pairs imply given finite high parts).
-    mortar::State s;
-    bool rewrite;
-    const bool flags = flags_valid(st), pairs = storage.load_elastic(st, s, rewrite),
-               finite = all_finite(st, slot::substeps_accepted);
-    if (!(flags & pairs & finite)) return kTakesFullPath;
-    if (!mortar::state_in_range(s)) return kTakesFullPath;
-    const bool turned = may_turn() && !is_identity(d_rot_of(k));
-    if (turned) {
-      rotate_tangential_state(d_rot_of(k), s);
-      // A turn can overflow a finite vector near the range's end; the law
-      // then rejects the state (check_state), which the full path reports.
-      const double turned[] = {s.plastic[1], s.plastic[2], s.crack[1], s.crack[2], s.separation[1], s.separation[2]};
-      if (!all_finite(turned, 6)) return kTakesFullPath;
-    }
-    const bool first = st[slot::initialised] == Real(0);
-    // A first call replaces SDV 22, whatever it holds; the store's finite
-    // test below reads it, so an overflowed one goes the full path.
-    if (first && !std::isfinite(double(st[slot::reference_penetration]))) return kTakesFullPath;
-    mortar::IncrementResult r;
-    if (!mortar::elastic_increment(setup.model, s, separation_increment(k, st, s), r)) return kTakesFullPath;
-    // Fixed counts, so that the checks and copies need no loops: in 2D the
-    // third component is not an output.
-    Real out[4];
-    abaqus_stress(setup, r.traction, out);
-    out[3] = Real(r.elastic_energy);
-    // In double precision every value is finite already (the state's test
-    // above, elastic_increment's); a float may overflow, which store_elastic
-    // checks with the state's values.
-    if (!storage.store_elastic(s, turned, rewrite, out, st)) return reject_point(k, mortar::Failure::non_finite_result);
-    if (first) mark_initialised(k, st);
-    write_stress(k, out);
-    write_energies(k, double(out[3]), 0.0);  // spd: no dissipation
-    return 0;
   }
 
 #if MJ_ELASTIC_LANES
@@ -303,20 +241,43 @@ struct ExplicitBlock {
     if (counts.n_dir == 3) stress_k[2] = out[2];
   }
 
-  // The full path's stores (adapter/explicit_block_store.hpp): a rejected
-  // increment's counts and start outputs; the end state, stress and energies
-  // in double precision, or in single precision checked before any is stored.
-  int keep_rejected(const Setup& setup, int k, Real* st, const mortar::State& s,
-                    const mortar::IncrementResult& r) const;
-  int store_double(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
-                   const mortar::IncrementResult& r, bool first) const;
-  int store_float(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
-                  const mortar::IncrementResult& r, bool first) const;
+  // The two stores (adapter/explicit_block_store.hpp): an elastic
+  // increment's (the shortcut's and the lanes'), which writes only the slots
+  // such an increment changes; any other's, the whole state. Besides, the
+  // writers of a point that keeps its start state: keep_rejected (the law
+  // rejected the increment) and reject_point.
+  template <bool kChecked>
+  int store_elastic(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
+                    const mortar::Vec3& traction, double energy, bool turned, bool first) const;
+  int store_full(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
+                 const mortar::IncrementResult& r, bool first) const;
   template <int kCount>
   int store_float_over(const Setup& setup, const StateStorage<Real>& storage, int k, Real* st, const mortar::State& s,
                        const mortar::IncrementResult& r, bool first) const;
+  int keep_rejected(const Setup& setup, int k, Real* st, const mortar::State& s,
+                    const mortar::IncrementResult& r) const;
 
-  // Integrates point k and writes its outputs. Returns the law's Failure code.
+  // Whether the elastic shortcut may try point k's increment: its last
+  // increment elastic (SDV 19 = 0: a plastic one most likely left it on the
+  // surface, where the shortcut proves nothing), the state well formed (SDV
+  // 1-18 finite, every float pair canonical, so that the elastic store may
+  // leave unchanged pairs as they are) and in range, and what the turn and a
+  // first call bring finite.
+  bool shortcut_may_try(const Real* st, const mortar::State& s, bool well_formed, bool turned, bool first) const {
+    namespace slot = mortar::slot;
+    if (!(MORTAR_FAST_PATHS && st[slot::substeps_accepted] == Real(0))) return false;
+    if (!well_formed || !mortar::state_in_range(s)) return false;
+    if (turned) {
+      const double v[] = {s.plastic[1], s.plastic[2], s.crack[1], s.crack[2], s.separation[1], s.separation[2]};
+      if (!all_finite(v, 6)) return false;
+    }
+    return !first || std::isfinite(double(st[slot::reference_penetration]));
+  }
+
+  // Integrates point k and writes its outputs: check the point's slots, load
+  // its state once, turn it by dRot, form the increment, integrate (by the
+  // elastic shortcut where it proves the increment elastic, else the law's
+  // full integration: the same result), store. Returns the Failure code.
   int integrate_point(const Setup& setup, const StateStorage<Real>& storage, int k) const {
     namespace slot = mortar::slot;
     if (penetration_of(k) <= kUnpairedPenetration) {  // no opposite surface: no interaction
@@ -326,32 +287,31 @@ struct ExplicitBlock {
       return 0;
     }
     Real* st = state_of(k);
-    // A point whose last increment was plastic (it took substeps, SDV 19)
-    // most likely starts on the surface, where the shortcut can prove
-    // nothing (and would spend an exp on a worn joint): it goes the full
-    // path at once, which gives the same result.
-    if (MORTAR_FAST_PATHS && st[slot::substeps_accepted] == Real(0))
-      if (const int code = elastic_point(setup, storage, k, st); code != kTakesFullPath) {
-        MJ_COUNT_PATH(shortcut);
-        return code;
-      }
-    MJ_COUNT_PATH(full);
-    if (!flags_valid(st) || !storage.consistent(st)) return reject_point(k, mortar::Failure::invalid_state);
     mortar::State s;
-    storage.load(st, s);
-    if (may_turn()) rotate_tangential_state(d_rot_of(k), s);
+    const bool canonical = storage.load(st, s);
+    const bool well_formed = canonical & all_finite(st, slot::substeps_accepted);
+    if (!storage.slots_valid(st) || !storage.consistent(st, well_formed)) {
+      MJ_COUNT_PATH(full);  // as the law's own rejections
+      return reject_point(k, mortar::Failure::invalid_state);
+    }
+    const bool turned = may_turn() && !is_identity(d_rot_of(k));
+    if (turned) rotate_tangential_state(d_rot_of(k), s);
     const bool first = st[slot::initialised] == Real(0);
     const mortar::Vec3 d = separation_increment(k, st, s);
-    // elastic_point has tried the shortcut on this state and increment (or
-    // declined a state the law rejects before it), or the point was plastic
-    // and the shortcut is not worth a try: the law does not try it again.
-    const mortar::IncrementResult r = mortar::integrate_full(setup.model, s, d);
-    if (!r.status.ok()) return keep_rejected(setup, k, st, s, r);
-    if constexpr (StateStorage<Real>::kSingle) {
-      return store_float(setup, storage, k, st, s, r, first);
-    } else {
-      return store_double(setup, storage, k, st, s, r, first);
+    if (shortcut_may_try(st, s, well_formed, turned, first)) {
+      mortar::IncrementResult r;
+      if (mortar::elastic_increment(setup.model, s, d, r)) {
+        MJ_COUNT_PATH(shortcut);
+        return store_elastic<false>(setup, storage, k, st, s, r.traction, r.elastic_energy, turned, first);
+      }
     }
+    MJ_COUNT_PATH(full);
+    // A copy for the law to overwrite, so that s itself never has its
+    // address taken and stays in registers on the shortcut's path.
+    mortar::State end = s;
+    const mortar::IncrementResult r = mortar::integrate_full(setup.model, end, d);
+    if (!r.status.ok()) return keep_rejected(setup, k, st, end, r);
+    return store_full(setup, storage, k, st, end, r, first);
   }
 };
 

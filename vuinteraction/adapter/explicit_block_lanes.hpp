@@ -1,6 +1,6 @@
 // ExplicitBlock's elastic lanes: the elastic shortcut for two points at once
 // (mortar::lanes::elastic_increment_lanes, one point per lane of a vector of
-// doubles), between the solver's arrays and elastic_point's store.
+// doubles), between the solver's arrays and the elastic store.
 // The rest: docs/adapters.md, section 2.
 #pragma once
 
@@ -12,11 +12,11 @@ namespace mj_adapter {
 template <class Real>
 struct ExplicitBlock<Real>::LaneCheckInputs {
   mortar::lanes::D wIII, dissipation_damage, penetration, substeps_accepted, initialised, turn;
-  mortar::lanes::Mask loaded;  // finite SDV 1-18, every float pair canonical
+  mortar::lanes::Mask loaded;  // finite SDV 1-18, every float pair canonical, SDV 35 valid where kept
 };
 
 template <class Real>
-void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, int lane,
+MORTAR_KERNEL_INLINE void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, int lane,
                                     mortar::lanes::ElasticLanes& y, LaneCheckInputs& checks) const {
   namespace slot = mortar::slot;
   const Real* st = state_of(k);
@@ -45,16 +45,19 @@ void ExplicitBlock<Real>::load_lane(const StateStorage<Real>& storage, int k, in
   checks.substeps_accepted[lane] = double(st[slot::substeps_accepted]);
   checks.initialised[lane] = double(st[slot::initialised]);
   checks.turn[lane] = may_turn() ? double(distance_from_identity(d_rot_of(k))) : 0.0;
-  checks.loaded[lane] = canonical && finite ? -1 : 0;
+  const bool flags_valid =
+      !storage.flags || mortar::integration_flags_valid(double(st[mortar::flag_slot::integration_flags]));
+  checks.loaded[lane] = (canonical & finite & flags_valid) ? -1 : 0;
 }
 
-// The lanes that elastic_point would take and that need none of its special
-// cases: the state's rules (flag_valid, mortar::ranges_hold) with w_III = 0
-// and SDV 23 = 1 (not a first call), paired, SDV 19 = 0, dRot the identity.
+// The lanes that integrate_point's shortcut would take and that need none of
+// its special cases: the state's rules (mortar::adapter_slots_valid's and
+// mortar::ranges_hold, over the lanes) with w_III = 0 and SDV 23 = 1 (not a
+// first call), paired, SDV 19 = 0, dRot the identity.
 template <class Real>
 mortar::lanes::Mask ExplicitBlock<Real>::lane_candidates(const mortar::lanes::ElasticLanes& y, const LaneCheckInputs& r) {
   const mortar::lanes::Mask rules =
-      flag_valid(y.h) & mortar::ranges_hold(y.dn, y.ds, y.wI, y.wII, r.wIII, r.dissipation_damage);
+      mortar::flag_valid(y.h) & mortar::ranges_hold(y.dn, y.ds, y.wI, y.wII, r.wIII, r.dissipation_damage);
   return r.loaded && rules && r.wIII == 0.0 && r.initialised == 1.0 && r.penetration > kUnpairedPenetration &&
          r.substeps_accepted == 0.0 && r.turn == 0.0;
 }
@@ -80,7 +83,7 @@ mortar::lanes::Mask ExplicitBlock<Real>::fits_in_real(const mortar::lanes::Elast
 }
 
 template <class Real>
-unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const {
+MORTAR_KERNEL_INLINE unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStorage<Real>& storage, int k) const {
   namespace slot = mortar::slot;
   using mortar::lanes::kWidth;
   mortar::lanes::ElasticLanes y;
@@ -101,12 +104,8 @@ unsigned ExplicitBlock<Real>::elastic_lanes(const Setup& setup, const StateStora
     s.plastic = mortar::Vec3(y.plastic[0][l], y.plastic[1][l], y.plastic[2][l]);
     s.crack = mortar::Vec3(0.0, double(st[slot::crack_s1]), double(st[slot::crack_s2]));
     s.open = y.h[l] != 0;
-    Real out[4];
-    abaqus_stress(setup, mortar::Vec3(r.traction[0][l], r.traction[1][l], r.traction[2][l]), out);
-    out[3] = Real(r.energy[l]);
-    storage.store_elastic_lane(s, out, st);
-    write_stress(k + l, out);
-    write_energies(k + l, double(out[3]), 0.0);  // spd: no dissipation
+    const mortar::Vec3 traction(r.traction[0][l], r.traction[1][l], r.traction[2][l]);
+    store_elastic<true>(setup, storage, k + l, st, s, traction, r.energy[l], false, false);
     MJ_COUNT_PATH(lanes);
     done |= 1u << l;
   }

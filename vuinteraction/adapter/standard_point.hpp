@@ -125,10 +125,16 @@ struct StandardPoint {
   void integrate_step(const Caller& who, const Setup& setup) const {
     namespace slot = mortar::slot;
     double* st = statev;
-    mortar::State s;
-    mortar::load_state(st, s);
     // SDV 35, the integration flags, with NSTATV >= 35 (docs/abaqus.md).
     const bool flags = counts.n_states >= mortar::kFlaggedStateCount;
+    if (!mortar::adapter_slots_valid(st, flags)) {  // as the law's own rejections
+      reject(static_cast<int>(mortar::Failure::invalid_state));
+      *pnewdt = std::min(*pnewdt, kCutBack);
+      report_rejected(who, mortar::Failure::invalid_state);
+      return;
+    }
+    mortar::State s;
+    mortar::load_state(st, s);
     if (flags) s.integration_flags = mortar::load_integration_flags(st);
     if (counts.n_dir == 3) rotate_tangential_state(drot, s);
     const bool first = st[slot::initialised] == 0.0;

@@ -36,47 +36,38 @@ struct StateStorage {
   // Single precision with too few slots for the pairs.
   bool plain_float() const { return kSingle && !pairs; }
 
+  // The adapter's own slots obey their rules (mortar::adapter_slots_valid).
+  bool slots_valid(const Real* st) const { return mortar::adapter_slots_valid(st, flags); }
+
   // Every low part belongs to its high part (mortar::pair_consistent).
-  bool consistent(const Real* st) const {
+  // `well_formed` (SDV 1-18 finite and every pair canonical) implies it: a
+  // canonical pair with a finite high part is consistent, so the pairs are
+  // tested one by one only otherwise.
+  bool consistent(const Real* st, bool well_formed) const {
     if constexpr (kSingle) {
-      return !pairs || mortar::pairs_consistent(st);
+      if (pairs && !well_formed) return mortar::pairs_consistent(st);
     }
     return true;
   }
 
-  void load(const Real* st, mortar::State& s) const {
+  // SDV 1-23 (the pairs' values where kept, the integration flags where
+  // kept) into s; whether every float pair is canonical (mortar::
+  // pair_canonical: store() would write it unchanged), always true without
+  // pairs.
+  bool load(const Real* st, mortar::State& s) const {
     if (flags) s.integration_flags = mortar::load_integration_flags(st);
-    if constexpr (kSingle) {
-      if (pairs) return mortar::load_state_pairs(st, s);
-    }
     mortar::load_state(st, s);
-  }
-
-  // The elastic path's load (ExplicitBlock::elastic_point): load(), false
-  // when a pair is not consistent() (the full path rejects the state), and
-  // `rewrite` false when every pair is canonical (mortar::pair_canonical:
-  // store() would write it unchanged), so that store_elastic() may leave the
-  // pairs an elastic increment does not change where they are. A canonical
-  // pair with a finite high part (the caller's test) is consistent, so the
-  // pairs are tested one by one only when one is not canonical.
-  bool load_elastic(const Real* st, mortar::State& s, bool& rewrite) const {
-    rewrite = false;
     if constexpr (kSingle) {
-      if (pairs) {
-        mortar::load_state(st, s);
-        rewrite = !mortar::canonical_pairs_into(st, s);
-        return !rewrite || consistent(st);
-      }
+      if (pairs) return mortar::canonical_pairs_into(st, s);
     }
-    mortar::load_state(st, s);
     return true;
   }
 
   // The elastic lanes' load (ExplicitBlock::elastic_lanes): the paired
   // variables' values, in the order of mortar::kPairedSlots, and whether the
   // lanes may take the state: always in double precision; with float pairs
-  // when every pair is canonical (load_elastic()'s `rewrite` false, so that
-  // store_elastic() leaves them where they are). Not for plain floats.
+  // when every pair is canonical (as load() tells, so that store_elastic()
+  // may leave them where they are). Not for plain floats.
 #if MORTAR_ELASTIC_LANES
   bool lane_values(const Real* st, double (&v)[mortar::kPairCount]) const {
     if constexpr (kSingle) {
@@ -91,17 +82,23 @@ struct StateStorage {
 #endif
 
   // What store() changes after an elastic increment (mortar::elastic_increment):
-  // The rest: docs/adapters.md, section 8.
-  bool store_elastic(const mortar::State& s, bool turned, bool rewrite, const Real (&outputs)[4], Real* st) const {
+  // the separation, after a turn the tangential plastic and crack
+  // components, and the counts; nothing else. In single precision every
+  // value is tested to fit in a float first, unless kChecked (the lanes
+  // test them in double, both points at once). False, nothing written, when
+  // one does not fit. With float pairs, every pair canonical (the caller's
+  // condition), so that the pairs left where they are equal what store()
+  // would write.
+  template <bool kChecked>
+  bool store_elastic(const mortar::State& s, bool turned, const Real (&outputs)[4], Real* st) const {
     namespace slot = mortar::slot;
     if constexpr (kSingle) {
-      if (pairs && rewrite) return store_all_pairs(s, outputs, st);
-      if (pairs) return store_elastic_pairs(s, turned, outputs, st);
+      if (pairs) return store_elastic_pairs<kChecked>(s, turned, outputs, st);
     }
     const Real v[] = {Real(s.plastic[1]), Real(s.plastic[2]),    Real(s.crack[1]),     Real(s.crack[2]),
                       Real(s.separation[0]), Real(s.separation[1]), Real(s.separation[2]), outputs[0],
                       outputs[1], outputs[2], outputs[3]};
-    if constexpr (kSingle) {  // a finite double is itself
+    if constexpr (kSingle && !kChecked) {  // a finite double is itself
       if (!mortar::all_finite(v, 11)) return false;
     }
     st[slot::plastic_s1] = v[0];
@@ -111,23 +108,6 @@ struct StateStorage {
     for (int i = 0; i < 3; ++i) st[slot::separation_n + i] = v[4 + i];
     store_counts(s, st);
     return true;
-  }
-
-  // store_elastic() for a point of the elastic lanes (ExplicitBlock::
-  // elastic_lanes): not turned, every float pair canonical, and every value
-  // it converts to Real, the `outputs` included, known to fit (the lanes
-  // test them in double, both points at once: ExplicitBlock::fits_in_real).
-  // Nothing is left to test: in single precision store_elastic_pairs' test of
-  // the floats is not repeated point by point.
-  void store_elastic_lane(const mortar::State& s, const Real (&outputs)[4], Real* st) const {
-    if constexpr (kSingle) {  // the lanes take float pairs only
-      float sep[6];
-      separation_pairs(s, sep);
-      store_separation_pairs(sep, st);
-      store_counts(s, st);
-    } else {
-      store_elastic(s, false, false, outputs, st);  // tests nothing in double
-    }
   }
 
   void store(const mortar::State& s, Real* st) const {
@@ -154,29 +134,13 @@ struct StateStorage {
     mortar::store_state(s, st);
   }
 
-  // store_elastic() with a pair that is not canonical: every slot store()
-  // writes, through a copy checked before it is stored (the pairs' rounding
-  // out of line, mortar::store_state_pairs). Out of line and given a copy
-  // of the state, so that the caller's state, which its common path keeps in
-  // registers, never has its address taken.
-#if defined(__GNUC__)
-  __attribute__((noinline))
-#endif
-  static bool store_all_pairs(mortar::State s, const float (&outputs)[4], float* st) {
-    float end[mortar::kPairedStateCount];
-    std::copy(st, st + mortar::kPairedStateCount, end);
-    mortar::store_state_pairs(s, end);
-    if (!mortar::all_finite(outputs, 4) || !mortar::all_finite(end, mortar::kPairedStateCount)) return false;
-    std::copy(end, end + mortar::kPairedStateCount, st);
-    return true;
-  }
-
   // store_elastic() with float pairs: the separation's three pairs and, after
   // a turn, the tangential plastic pairs and crack components, checked with
   // the outputs, in one test, before any is stored. The reference
   // penetration (SDV 22, which a first call replaces only afterwards) is
-  // tested too, as store_all_pairs tests every slot it leaves, so that both
+  // tested too, as the full store tests every slot it leaves, so that both
   // reject the same points.
+  template <bool kChecked>
   static bool store_elastic_pairs(const mortar::State& s, bool turned, const float (&outputs)[4], float* st) {
     namespace slot = mortar::slot;
     namespace low = mortar::low_slot;
@@ -185,9 +149,11 @@ struct StateStorage {
     // plastic pairs and the crack components.
     float sep[6], tan[6];
     separation_pairs(s, sep);
-    const float tested[12] = {sep[0],     sep[1],     sep[2],     sep[3],     sep[4],     sep[5],
-                              st[slot::reference_penetration], outputs[0], outputs[1], outputs[2], outputs[3], 0};
-    if (!mortar::all_finite_values(tested)) return false;
+    if constexpr (!kChecked) {
+      const float tested[12] = {sep[0], sep[1], sep[2], sep[3], sep[4], sep[5], st[slot::reference_penetration],
+                                outputs[0], outputs[1], outputs[2], outputs[3], 0};
+      if (!mortar::all_finite_values(tested)) return false;
+    }
     if (turned) {
       mortar::split_into_pair(s.plastic[1], tan[0], tan[2]);
       mortar::split_into_pair(s.plastic[2], tan[1], tan[3]);

@@ -154,7 +154,7 @@ MORTAR_KERNEL_INLINE B elastic_end(const Model& M, const ElasticStart<T>& y, B o
 // The shortcut for one point from a state the rules accept: true, the
 // increment booked exactly as the full path books one elastic segment (no
 // dissipation, no substeps); false, nothing written, when it is not proved.
-inline bool elastic_increment(const Model& M, State& state, const Vec3& d, IncrementResult& res) {
+MORTAR_KERNEL_INLINE bool elastic_increment(const Model& M, State& state, const Vec3& d, IncrementResult& res) {
   // Opening past a completed normal's inelastic opening moves delta_p_n
   // (docs/model.md 6): the full path's.
   if (state.open && state.dn >= 1 && ((state.separation[0] + d[0]) - state.plastic[0]) - state.crack[0] > 0)

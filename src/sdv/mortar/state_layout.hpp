@@ -3,6 +3,7 @@
 // single precision's float pairs, state_pairs.hpp).
 #pragma once
 
+#include "mortar/result.hpp"
 #include "mortar/state.hpp"
 
 namespace mortar {
@@ -88,7 +89,8 @@ static_assert(sizeof kPairedSlots / sizeof kPairedSlots[0] == kPairedStateCount 
 template <class Real>
 int int_slot(Real x) {
   const double v = double(x);
-  return (v >= -2147483648.0 && v <= 2147483647.0) ? int(v) : 0;
+  const bool in_range = (v >= -2147483648.0) & (v <= 2147483647.0);
+  return int(in_range ? v : 0.0);
 }
 
 // Named mapping between State and the flat array of one point (any precision).
@@ -144,6 +146,28 @@ int load_integration_flags(const Real* a) {
 template <class Real>
 void store_integration_flags(int flags, Real* a) {
   a[flag_slot::integration_flags] = Real(flags);
+}
+
+// The adapters' own slots obey their rules (docs/model.md 3): the open flag
+// (SDV 15) and the initialised flag (SDV 23) are 0 or 1; SDV 35, where kept
+// (`flags`), a whole number of integration flags from 0 to 15. The law reads
+// them as a bool and an int, so a corrupted 0.5 or NaN would silently become
+// something else. For one value (T = double) or the points in vector lanes
+// (T = lanes::D, a mask); x + 2^52 - 2^52 is x for a whole x below 2^52 and
+// a whole number for any other, in every rounding mode.
+template <class T>
+auto flag_valid(T x) {
+  return (x == 0.0) | (x == 1.0);
+}
+template <class T>
+auto integration_flags_valid(T x) {
+  constexpr double most = (1 << integration_flag::kCount) - 1, whole = 4503599627370496.0;  // 2^52
+  return (x >= 0.0) & (x <= most) & ((x + whole) - whole == x);
+}
+template <class Real>
+bool adapter_slots_valid(const Real* a, bool flags) {
+  return flag_valid(double(a[slot::open])) & flag_valid(double(a[slot::initialised])) &
+         (!flags || integration_flags_valid(double(a[flag_slot::integration_flags])));
 }
 
 // Short names of the state variables in slot order (for CSV headers, docs).
