@@ -83,12 +83,11 @@ struct StateStorage {
 
   // What store() changes after an elastic increment (mortar::elastic_increment):
   // the separation, after a turn the tangential plastic and crack
-  // components, and the counts; nothing else. In single precision every
-  // value is tested to fit in a float first, unless kChecked (the lanes
-  // test them in double, both points at once). False, nothing written, when
-  // one does not fit. With float pairs, every pair canonical (the caller's
-  // condition), so that the pairs left where they are equal what store()
-  // would write.
+  // components, and the counts. In single precision every value is tested to
+  // fit in a float first, unless kChecked (the lanes tested them in double).
+  // False, nothing written, when one does not fit. Float pairs must all be
+  // canonical (the caller's condition).
+  // The rest: docs/adapters.md, section 8.
   template <bool kChecked>
   bool store_elastic(const mortar::State& s, bool turned, const Real (&outputs)[4], Real* st) const {
     namespace slot = mortar::slot;
