@@ -256,7 +256,7 @@ DirectResult apply_direct_rules(const std::vector<TestCurve>& curves) {
   // The hyperbola and the residual friction from the tests under
   // compression; one at constant tension is for bs (unloading_rules.hpp).
   for (const TestCurve& c : curves)
-    if (c.shear() && c.sigma_n < 0) r.peaks.push_back(shear_peak(c));
+    if (c.shear_under_compression()) r.peaks.push_back(shear_peak(c));
   const std::vector<Level> levels = levels_of(r.peaks);
   if (levels.size() < 2 || (!tension && levels.size() < 3))
     throw InputError("the data hold shear curves at " + std::to_string(levels.size()) +

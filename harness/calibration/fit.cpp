@@ -9,7 +9,6 @@
 #include "calibration/residuals.hpp"
 #include "calibration/uncertainty.hpp"
 #include "input/input_error.hpp"
-#include "solvers/mixed_control.hpp"
 
 namespace mortar::harness {
 
@@ -49,7 +48,7 @@ std::vector<FitUnknown> make_unknowns(const std::vector<TestCurve>& curves, cons
   std::set<double> levels;
   // m and n per level under compression: at constant tension wIII = 0 (Eq. 9).
   for (const TestCurve& c : curves)
-    if (c.shear() && c.sigma_n < 0) levels.insert(c.sigma_n);
+    if (c.shear_under_compression()) levels.insert(c.sigma_n);
   const bool dilatancy = start["psi0"].stage == Stage::fit;
   // The strengths the direct rules gave, refined: held at their direct
   // values, a 0.4 % error of c0 (a digitised peak just short of the true one)
@@ -205,8 +204,7 @@ std::vector<std::string> labels(const std::vector<FitUnknown>& u, std::vector<in
 bool shown_by_unloading(const std::vector<TestCurve>& curves, const FitUnknown& u) {
   const std::string name = u.label();
   for (const TestCurve& c : curves)
-    if ((name == "bn" && c.kind == TestKind::cyclic_tension) || (name == "bs" && c.cycles() && c.shear() && c.sigma_n > 0))
-      return true;
+    if (const char* shows = c.unloading_shows(); shows && name == shows) return true;
   return false;
 }
 

@@ -36,6 +36,16 @@ struct TestCurve {
   // Unloading-reloading or reversals: the abscissa may decrease.
   bool cycles() const { return kind == TestKind::cyclic_tension || kind == TestKind::cyclic_shear; }
   bool has_uplift() const { return !uplift.empty(); }
+  // Shear at constant compression: the tests that show the hyperbola's peak.
+  bool shear_under_compression() const { return shear() && sigma_n < 0; }
+  // The damage ratio the curve's unloading branches show (docs/model.md 6):
+  // "bn" for cyclic tension, "bs" for cyclic shear at constant tension (open
+  // while it unloads), nullptr otherwise (closed shear unloads through its
+  // plastic slip alone).
+  const char* unloading_shows() const {
+    if (kind == TestKind::cyclic_tension) return "bn";
+    return kind == TestKind::cyclic_shear && sigma_n > 0 ? "bs" : nullptr;
+  }
 };
 
 // Reads one curve; InputError naming the file, the line, the value and the

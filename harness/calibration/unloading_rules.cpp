@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "calibration/curve_reading.hpp"
 
@@ -55,12 +56,12 @@ void unloading_rules(const std::vector<TestCurve>& curves, Calibration& cal) {
   bool closed_shear_branches = false;
   for (const TestCurve& c : curves) {
     if (!c.cycles()) continue;
-    const bool shear = c.shear();
-    if (shear && c.sigma_n < 0) {
+    const char* shows = c.unloading_shows();
+    if (!shows) {
       closed_shear_branches = closed_shear_branches || !unloading_branches(c, bs.k).empty();
       continue;
     }
-    Ratio& r = shear ? bs : bn;
+    Ratio& r = shows == std::string("bn") ? bn : bs;
     for (const UnloadingBranch& b : unloading_branches(c, r.k)) {
       char line[240];
       if (std::isnan(b.ratio))
