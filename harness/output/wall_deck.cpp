@@ -1,9 +1,11 @@
 #include "output/wall_deck.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <ostream>
 #include <set>
+#include <stdexcept>
 #include <string>
 
 #include "mortar/state_layout.hpp"
@@ -49,6 +51,7 @@ class WallDeck {
 
   void write(std::ostream& out, double dt) {
     mesh_bodies();
+    plan_damping();
     out << "*HEADING\n"
         << "Wall of " << m_.blocks() << " rigid units from the scene " << s_.file << " (masonry-joint inp --scene)\n"
         << "** Units N, mm, s, t (tonne), MPa. In-plane wall (x along the wall, y up) extruded over the unit\n"
@@ -75,6 +78,7 @@ class WallDeck {
       const int ny = std::max(1, static_cast<int>(std::lround((y1 - y0) / hy)));
       boxes_.push_back(mesh_.add_box(body_name(m_, b), {x0, y0, 0.0}, {x1, y1, g.unit_depth}, {nx, ny, 1}));
       volume_.push_back((x1 - x0) * (y1 - y0) * g.unit_depth);
+      extent_.push_back({x0, y0, x1, y1});
     }
     for (const Body& b : m_.bodies) refs_.push_back(mesh_.add_node(b.cx, b.cy, 0.5 * g.unit_depth));
   }
@@ -107,21 +111,73 @@ class WallDeck {
   }
 
   // The scene's C = alpha·M (masses and inertias times the mass scaling) as
-  // a dashpot to ground on every free degree of freedom of each body.
-  void write_damping(std::ostream& out) const {
+  // DASHPOTA elements to fixed ground nodes: DASHPOT1/DASHPOT2 and torsional
+  // dashpots are Abaqus/Standard only. Each dashpot lies along x or y, its
+  // ground node far along that line (kGroundDistance wall lengths). At the
+  // reference node: the translational part; at two corner nodes of the box
+  // on either side of the reference node (an x pair above and below it, a y
+  // pair left and right of it, coefficients in inverse ratio of the offsets
+  // so that they add no coupling): the rotational part, which adds
+  // translational damping K/cap to each pair's direction, taken off the
+  // reference node's dashpot (cap = sum of the pairs' offset products).
+  struct Dashpot {
+    std::string set;
+    int node = 0, ground = 0;
+    double c = 0;
+  };
+  static constexpr double kGroundDistance = 1000.0;
+
+  void plan_damping() {
     const double alpha = s_.solver.mass_damping, f = s_.solver.mass_scaling;
     if (alpha <= 0) return;
-    int element = mesh_.elements();
+    const double far = kGroundDistance * std::max(m_.length, 1.0);
     for (int b = 1; b < static_cast<int>(m_.bodies.size()); ++b) {
       const Body& body = m_.bodies[static_cast<size_t>(b)];
-      for (int dof : {1, 2, 6}) {
-        if (b == m_.beam() && (dof == 1 || (dof == 6 && s_.wall.beam_rotation == BeamRotation::fixed))) continue;
-        const std::string set = "DAMP-" + body_name(m_, b) + "-" + std::to_string(dof);
-        out << "*ELEMENT, TYPE=DASHPOT1, ELSET=" << set << "\n" << ++element << ", " << refs_[static_cast<size_t>(b)]
-            << "\n*DASHPOT, ELSET=" << set << "\n" << dof << "\n"
-            << num(alpha * f * (dof == 6 ? body.inertia : body.mass)) << "\n";
+      const bool beam = b == m_.beam();
+      const bool free_x = !beam, free_r = !(beam && s_.wall.beam_rotation == BeamRotation::fixed);
+      const MeshBox& box = mesh_.box(boxes_[static_cast<size_t>(b)]);
+      const std::array<double, 4>& e = extent_[static_cast<size_t>(b)];  // x0, y0, x1, y1
+      const auto corner = [&](int i, int j) { return box.first_node + i + (box.n[0] + 1) * j; };
+      const double above = e[3] - body.cy, below = body.cy - e[1], right = e[2] - body.cx, left = body.cx - e[0];
+      const double cap_x = free_x ? above * below : 0, cap_y = right * left, cap = cap_x + cap_y;
+      const double M = alpha * f * body.mass, K = free_r ? alpha * f * body.inertia : 0;
+      if (K > 0 && !(cap > 0 && K <= M * cap))
+        throw std::invalid_argument("inp --scene: the rotational damping of " + body_name(m_, b) +
+                                    " does not fit dashpots at its box corners");
+      const double pair_t = K > 0 ? K / cap : 0;  // translational damping added by each pair
+      const std::string name = "DAMP-" + body_name(m_, b) + "-";
+      const auto add = [&](const std::string& tag, int node, double x, double y, double z, bool along_x, double c) {
+        if (c <= 0) return;
+        const int ground = mesh_.add_node(along_x ? x + far : x, along_x ? y : y + far, z);
+        dashpots_.push_back({name + tag, node, ground, c});
+      };
+      const int ref = refs_[static_cast<size_t>(b)];
+      const double zr = 0.5 * s_.wall.unit_depth;  // the reference nodes' z; the corners' is 0
+      if (free_x) add("X", ref, body.cx, body.cy, zr, true, M - (cap_x > 0 ? pair_t : 0));
+      add("Y", ref, body.cx, body.cy, zr, false, M - (cap_y > 0 ? pair_t : 0));
+      if (K > 0 && cap_x > 0) {  // x pair: bottom-left and top-left corners, c·offset equal
+        const double r = K * cap_x / cap, c_top = r / (above * (above + below)), c_bottom = c_top * above / below;
+        add("XB", corner(0, 0), e[0], e[1], 0.0, true, c_bottom);
+        add("XT", corner(0, box.n[1]), e[0], e[3], 0.0, true, c_top);
+      }
+      if (K > 0 && cap_y > 0) {  // y pair: bottom-left and bottom-right corners
+        const double r = K * cap_y / cap, c_right = r / (right * (right + left)), c_left = c_right * right / left;
+        add("YL", corner(0, 0), e[0], e[1], 0.0, false, c_left);
+        add("YR", corner(box.n[0], 0), e[2], e[1], 0.0, false, c_right);
       }
     }
+  }
+
+  void write_damping(std::ostream& out) const {
+    if (dashpots_.empty()) return;
+    int element = mesh_.elements();
+    std::vector<int> ground;
+    for (const Dashpot& d : dashpots_) {
+      out << "*ELEMENT, TYPE=DASHPOTA, ELSET=" << d.set << "\n" << ++element << ", " << d.node << ", " << d.ground
+          << "\n*DASHPOT, ELSET=" << d.set << "\n\n" << num(d.c) << "\n";
+      ground.push_back(d.ground);
+    }
+    write_set(out, "*NSET, NSET=DAMP-GROUND", ground);
   }
 
   void write_interactions(std::ostream& out) {
@@ -169,6 +225,7 @@ class WallDeck {
     // as the scene says; its ux through the displacement history.
     out << "*BOUNDARY\nBASE-REF, ENCASTRE\nFREE-REFS, 3, 5\n";
     if (s_.wall.beam_rotation == BeamRotation::fixed) out << "BEAM-REF, 6, 6\n";
+    if (!dashpots_.empty()) out << "DAMP-GROUND, 1, 3\n";
     out << "*BOUNDARY, AMPLITUDE=TOP-DISPLACEMENT\nBEAM-REF, 1, 1, 1.\n"
         << "*DLOAD, AMPLITUDE=SELF-WEIGHT\nMOVING, GRAV, " << num(s_.loading.gravity) << ", 0., -1., 0.\n"
         << "*CLOAD, AMPLITUDE=PRECOMPRESSION\nBEAM-REF, 2, "
@@ -184,6 +241,8 @@ class WallDeck {
   InpMesh mesh_;
   std::vector<int> boxes_, refs_, roles_;
   std::vector<double> volume_;
+  std::vector<std::array<double, 4>> extent_;
+  std::vector<Dashpot> dashpots_;
 };
 
 }  // namespace

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "input/parameter_file.hpp"
@@ -175,6 +177,69 @@ TEST_CASE("inp --scene: units, rigid bodies, joints by role, props, loading", "[
   REQUIRE(step.size() == 1);
   CHECK(step[0]->has("DIRECT USER CONTROL"));
   CHECK(inp_number(step[0]->data[0][1]) == Approx(t_end));
+
+  // Damping: Abaqus/Explicit has DASHPOTA only (DASHPOT1/DASHPOT2 and
+  // torsional dashpots are Abaqus/Standard's), so every dashpot runs from a
+  // node of a body along x or y to a fixed ground node; summed per rigid
+  // body about its reference node they give the scene's C = alpha·f·M on
+  // every free degree of freedom (u1, u2, ur3) and nothing on the others.
+  std::map<int, std::pair<int, double>> dashpot;  // element -> (ground node, coefficient)
+  std::map<std::string, double> coefficient;
+  for (const InpCard* c : m.all("DASHPOT")) {
+    REQUIRE(c->data.size() == 2);
+    CHECK(c->data[0] == std::vector<std::string>{""});  // no degrees of freedom for DASHPOTA
+    coefficient[c->at("ELSET")] = inp_number(c->data[1][0]);
+  }
+  REQUIRE(m.nsets.count("DAMP-GROUND") == 1);
+  const auto& ground = m.nsets.at("DAMP-GROUND");
+  const auto fixed = load_line(m, "BOUNDARY", "DAMP-GROUND", 1);
+  REQUIRE(fixed.size() == 4);
+  CHECK(std::atoi(fixed[2].c_str()) == 3);
+  for (const InpCard* c : m.all("ELEMENT")) {
+    const std::string type = inp_upper(c->at("TYPE"));
+    CHECK((type == "C3D8R" || type == "DASHPOTA"));
+    if (type != "DASHPOTA") continue;
+    REQUIRE(coefficient.count(c->at("ELSET")) == 1);
+    for (const auto& d : c->data) {
+      REQUIRE(d.size() == 3);
+      const int e = std::atoi(d[0].c_str()), to = std::atoi(d[2].c_str());
+      CHECK(std::count(ground.begin(), ground.end(), to) == 1);
+      dashpot[e] = {to, coefficient.at(c->at("ELSET"))};
+    }
+  }
+  const WallModel wm = build_wall(g);
+  const double af = s.solver.mass_damping * s.solver.mass_scaling;
+  int damped = 0;
+  for (const InpCard* c : m.all("RIGID BODY")) {
+    const std::string set = c->at("ELSET");
+    if (set == "BASE") continue;
+    const int body = set == "BEAM" ? wm.beam() : std::atoi(set.substr(5).c_str());
+    const auto& ref = m.nodes.at(std::atoi(c->at("REF NODE").c_str()));
+    std::set<int> nodes = {std::atoi(c->at("REF NODE").c_str())};
+    for (int e : m.elsets.at(set))
+      for (int n : m.elements.at(e)) nodes.insert(n);
+    double D[3][3] = {};
+    for (const auto& [e, gc] : dashpot) {
+      const int n = m.elements.at(e)[0];
+      if (!nodes.count(n)) continue;
+      const auto& p = m.nodes.at(n);
+      const auto& q = m.nodes.at(gc.first);
+      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2], len = std::sqrt(dx * dx + dy * dy + dz * dz);
+      CHECK(std::max(std::abs(dx), std::abs(dy)) / len == Approx(1.0).epsilon(1e-9));  // along x or y
+      const double v[3] = {dx / len, dy / len, (p[0] - ref[0]) * dy / len - (p[1] - ref[1]) * dx / len};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) D[i][j] += gc.second * v[i] * v[j];
+      ++damped;
+    }
+    const Body& b = wm.bodies[static_cast<size_t>(body)];
+    const bool beam = body == wm.beam();
+    const double expected[3] = {beam ? 0.0 : af * b.mass, af * b.mass, beam ? 0.0 : af * b.inertia};
+    CAPTURE(set);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        CHECK(D[i][j] == Approx(i == j ? expected[i] : 0.0).margin(1e-9 * af * (b.mass + b.inertia)));
+  }
+  CHECK(damped == static_cast<int>(dashpot.size()));
 }
 
 TEST_CASE("inp --scene: the J4D wall's tied courses join the base and the beam", "[inputs][decks]") {
