@@ -32,6 +32,15 @@ struct Routine {
   ExitUtility exit_utility;
 };
 
+// Inlined into each entry point, so that the call's block (a local there)
+// keeps its fields in registers through the points' loop; called through a
+// reference, the loop spilled its array offsets (docs/decisions.md).
+#if defined(__GNUC__)
+#define MJ_ENTRY_INLINE inline __attribute__((always_inline))
+#else
+#define MJ_ENTRY_INLINE inline
+#endif
+
 // One call of one routine, as the skeleton sees it. `Call` provides
 //   Counts counts;  const Real* props;
 //   void reject(int code)          finite outputs, `code` in SDV 21 as far as
@@ -40,7 +49,7 @@ struct Routine {
 //                                  the per-point arguments' rules (dRot):
 // The rest: docs/adapters.md, section 4.
 template <class Call>
-void run_call(const Routine& routine, const char* surf_int, int surf_int_length, Call& call) noexcept {
+MJ_ENTRY_INLINE void run_call(const Routine& routine, const char* surf_int, int surf_int_length, Call& call) noexcept {
   const Caller who = make_caller(routine.name, surf_int, surf_int_length);
   const ExitUtility exit_utility = routine.exit_utility;
   try {
