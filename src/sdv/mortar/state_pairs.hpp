@@ -214,9 +214,9 @@ inline bool canonical_pairs_into(const float* a, State& s) {
 #endif
 
 // load_state / store_state with the paired variables as float pairs: the
-// array holds at least kPairedStateCount values. The load is inline (the
-// single-precision routines run it on every point-update). The store stays
-// out of line, as scalar code: GCC at -O2 and -O3 miscompiles
+// array holds at least kPairedStateCount values. The load is the plain form
+// (the adapters load through canonical_pairs_into, tested against it). The
+// store stays out of line, as scalar code: GCC at -O2 and -O3 miscompiles
 // float(x - double(float(x))) when it vectorises two such lanes within a block
 // (the extension of the truncation becomes x, the low part 0; observed on
 // x86-64, reproduced in ten lines), which is what pair_low computes.
