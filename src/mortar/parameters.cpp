@@ -168,8 +168,11 @@ std::array<double, kPropsWithControls> to_props(const Parameters& p, const Contr
   return props;
 }
 
-Model make_model(const Parameters& p, const Controls& c) {
+Model make_model(const Parameters& p, const Controls& c, const CompressionCap& cap) {
   Model m;
+  m.cap = cap;
+  m.cap_initial = cap.fc / 3;
+  m.cap_residual = cap.fc / 7;
   m.p = p;
   m.controls = c;
   m.tan_phi0 = std::tan(p.phi0 * kDegree);
@@ -188,11 +191,69 @@ Model make_model(const Parameters& p, const Controls& c) {
   return m;
 }
 
-Model make_model_checked(const Parameters& p, const Controls& c) {
+Model make_model_checked(const Parameters& p, const Controls& c, const CompressionCap& cap) {
   ValidationError e = validate(p);
   if (e.ok()) e = validate(c);
+  if (e.ok()) e = validate(cap, p);
   if (!e.ok()) throw std::invalid_argument(e.message());
-  return make_model(p, c);
+  return make_model(p, c, cap);
+}
+
+const std::array<CapParameterInfo, kCapCount> kCapParameterInfo = {{
+    {"fc", "MPa", "compressive strength of the joint (0: no cap)", "fc = 0 (no cap) or 1e-3 <= fc <= 1000 MPa"},
+    {"Cs", "-", "shear share of the cap, sigma_n^2 + Cs tau^2", "0 <= Cs <= 1000"},
+    {"Gfc", "N/mm", "compressive fracture energy above the residual fc/7", "1e-6 <= Gfc <= 1e4 N/mm"},
+    {"kappa_p", "mm", "plastic closure at the peak fc", "0 <= kappa_p <= 100 mm"},
+}};
+
+double& cap_parameter_at(CompressionCap& cap, int index) {
+  double* table[kCapCount] = {&cap.fc, &cap.Cs, &cap.Gfc, &cap.kappa_p};
+  if (index < 0 || index >= kCapCount) throw std::out_of_range("cap parameter index out of range");
+  return *table[index];
+}
+double cap_parameter_at(const CompressionCap& cap, int index) {
+  return cap_parameter_at(const_cast<CompressionCap&>(cap), index);
+}
+int cap_parameter_index(const std::string& name) {
+  for (int i = 0; i < kCapCount; ++i)
+    if (name == kCapParameterInfo[i].name) return i;
+  return -1;
+}
+
+ValidationError validate(const CompressionCap& cap, const Parameters& p) {
+  auto bad = [](int i, double v, const char* rule) { return fail(kCapFirstProp + i, kCapParameterInfo[i].name, v, rule); };
+  for (int i = 0; i < kCapCount; ++i)
+    if (!std::isfinite(cap_parameter_at(cap, i))) return bad(i, cap_parameter_at(cap, i), "must be a finite number");
+  if (cap.fc == 0) return {};
+  if (!(cap.fc >= 1e-3 && cap.fc <= 1000)) return bad(0, cap.fc, kCapParameterInfo[0].rule);
+  if (!(cap.Cs >= 0 && cap.Cs <= 1000)) return bad(1, cap.Cs, kCapParameterInfo[1].rule);
+  if (!(cap.Gfc >= 1e-6 && cap.Gfc <= 1e4)) return bad(2, cap.Gfc, kCapParameterInfo[2].rule);
+  if (!(cap.kappa_p >= 0 && cap.kappa_p <= 100)) return bad(3, cap.kappa_p, kCapParameterInfo[3].rule);
+  // The softened cap (fc/7) contains every traction of the shear-tension
+  // surface at sigma_n >= 0 (|sigma_n| <= ft0, |tau| <= c0): the cap acts on
+  // closed joints only (docs/model.md 12).
+  const double reach = std::sqrt(p.ft0 * p.ft0 + cap.Cs * p.c0 * p.c0);
+  if (!(cap.fc / 7 > reach))
+    return bad(0, cap.fc,
+               "fc/7 > sqrt(ft0^2 + Cs c0^2): the softened cap must lie beyond the shear-tension surface at "
+               "sigma_n >= 0, so that it acts on closed joints only");
+  // No snap-back on the cap: its steepest softening, (fc - fc/7)^2 / Gfc at
+  // the peak, below the smallest stiffness along its flow, min(kn, Cs ks).
+  const double slope = std::pow(cap.fc * 6 / 7, 2) / cap.Gfc;
+  const double stiff = cap.Cs > 0 ? std::min(p.kn, cap.Cs * p.ks) : p.kn;
+  if (!(slope < stiff))
+    return bad(2, cap.Gfc,
+               "Gfc > (6 fc/7)^2 / min(kn, Cs ks): crushing must soften more slowly than the joint unloads "
+               "(no snap-back of the point)");
+  return {};
+}
+
+ValidationError read_cap(const double* props, int n_props, const Parameters& p, CompressionCap& cap) {
+  cap = CompressionCap{};
+  if (n_props <= kCapFirstProp || props == nullptr) return {};
+  for (int i = 0; i < kCapCount; ++i)
+    cap_parameter_at(cap, i) = kCapFirstProp + i < n_props ? props[kCapFirstProp + i] : 0.0;
+  return validate(cap, p);
 }
 
 }  // namespace mortar

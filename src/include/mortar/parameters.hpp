@@ -117,6 +117,39 @@ ValidationError read_props(const double* props, int n_props, Parameters& p, Cont
 inline constexpr int kPropsWithControls = kParameterCount + 5;
 std::array<double, kPropsWithControls> to_props(const Parameters& p, const Controls& c = Controls{});
 
+// The compression cap (docs/model.md 12; beyond the paper, after Lourenco &
+// Rots 1997): props(21..24). fc = 0 (or fewer than 21 props) is no cap, and
+// the law is the paper's to the bit. The cap acts on closed joints only: the
+// rule fc/7 > sqrt(ft0^2 + Cs c0^2) keeps the softened cap beyond every
+// traction the shear-tension surface allows at sigma_n >= 0.
+struct CompressionCap {
+  double fc = 0;       // compressive strength of the joint          [MPa]   0 (no cap), or [1e-3, 1000]
+  double Cs = 0;       // shear share of the cap, sigma_n^2 + Cs tau^2 [-]    [0, 1000]
+  double Gfc = 0;      // compressive fracture energy above fc/7     [N/mm]  [1e-6, 1e4]
+  double kappa_p = 0;  // plastic closure at the peak fc             [mm]    [0, 100]
+  bool on() const { return fc > 0; }
+};
+inline constexpr int kCapFirstProp = 20;  // 0-based position of fc: props(21)
+inline constexpr int kCapCount = 4;
+struct CapParameterInfo {
+  const char* name;
+  const char* unit;
+  const char* meaning;
+  const char* rule;
+};
+extern const std::array<CapParameterInfo, kCapCount> kCapParameterInfo;
+double& cap_parameter_at(CompressionCap& cap, int index);
+double cap_parameter_at(const CompressionCap& cap, int index);
+// Index of a cap parameter by its name ("fc", "Cs", "Gfc", "kappa_p"), or -1.
+int cap_parameter_index(const std::string& name);
+
+// The cap's own ranges and its rules against the joint's parameters p
+// (docs/model.md 12); indices are props positions (20..23).
+ValidationError validate(const CompressionCap& cap, const Parameters& p);
+// Reads props(21..24) when n_props > 20 (else no cap) and validates them
+// against p (already validated).
+ValidationError read_cap(const double* props, int n_props, const Parameters& p, CompressionCap& cap);
+
 // Parameters plus the values derived from them once (tangents of the angles,
 // alpha and beta of the undamaged surface), and the integration controls.
 struct Model {
@@ -135,12 +168,17 @@ struct Model {
   // The material length that bounds the smallest substep (min_substep_floor,
   // docs/model.md 7.4) [mm].
   double substep_length = 0;
+  // The compression cap (off unless cap.fc > 0) and its initial and residual
+  // strengths fc/3, fc/7 (docs/model.md 12) [MPa].
+  CompressionCap cap;
+  double cap_initial = 0, cap_residual = 0;
 };
 
 // Builds a Model from validated inputs (call validate first). Non-throwing.
-Model make_model(const Parameters& p, const Controls& c = Controls{});
+Model make_model(const Parameters& p, const Controls& c = Controls{}, const CompressionCap& cap = CompressionCap{});
 // Throwing convenience for C++ callers (harness, tests): std::invalid_argument
 // with ValidationError::message().
-Model make_model_checked(const Parameters& p, const Controls& c = Controls{});
+Model make_model_checked(const Parameters& p, const Controls& c = Controls{},
+                         const CompressionCap& cap = CompressionCap{});
 
 }  // namespace mortar

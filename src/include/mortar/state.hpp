@@ -27,6 +27,10 @@ struct State {
   // SDV 35: every integration_flag an increment of this point has raised
   // (OR'd; outside SDV 1-23, so load_state/store_state leave it).
   int integration_flags = 0;
+  // The compression cap's hardening variable: the plastic closure of
+  // crushing, sigma_c kappa_c' = sigma . delta_p' of the cap flow
+  // (docs/model.md 12) [mm]. 0 without a cap.
+  double kappa_c = 0;
 
   Vec3 elastic_separation() const { return separation - plastic; }
 };

@@ -67,6 +67,20 @@ enum : int {
 // The DEPVAR (NSTATV) from which the routines keep the integration flags.
 inline constexpr int kFlaggedStateCount = flag_slot::end;
 
+// SDV 36 (and 37, its float pair's low part, in single precision): the
+// compression cap's kappa_c (docs/model.md 12), kept only by a deck with a
+// cap, which needs DEPVAR >= 36 (double) or 37 (single). A deck without a cap
+// keeps today's layout and DEPVAR.
+namespace cap_slot {
+enum : int {
+  kappa_c = flag_slot::end,  // 36
+  kappa_c_low,               // 37, single precision
+  end                        // = 37 state variables
+};
+}  // namespace cap_slot
+inline constexpr int kCappedStateCountDouble = cap_slot::kappa_c + 1;
+inline constexpr int kCappedStateCountSingle = cap_slot::end;
+
 // Each paired variable's high slot and its low slot.
 struct SlotPair {
   int high, low;
