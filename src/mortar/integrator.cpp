@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cap.hpp"
 #include "mortar/integration/increment.hpp"
 #include "mortar/physics/elasticity.hpp"
 #include "mortar/physics/yield_surface.hpp"
@@ -17,6 +18,7 @@ const char* check_state(const State& s) {
   const std::array<double, 17> v = finite_state_values(s);
   if (!all_finite(v.data(), int(v.size()))) return "every state variable must be finite";
   // The rule broken, named: ranges_hold of one variable, the others at 0.
+  if (!(s.kappa_c >= 0.0 && std::isfinite(s.kappa_c))) return "the cap's kappa_c (SDV 36) must be a finite number >= 0";
   if (!ranges_hold(s.dn, 0.0, 0.0, 0.0, 0.0, 0.0)) return "damage d_n (SDV 10) must lie in [0, 1]";
   if (!ranges_hold(0.0, s.ds, 0.0, 0.0, 0.0, 0.0)) return "damage d_s (SDV 11) must lie in [0, 1]";
   if (!ranges_hold(0.0, 0.0, s.wI, 0.0, 0.0, 0.0)) return "work w_I (SDV 7) must be >= 0";
@@ -36,6 +38,12 @@ Mat3 continuum_tangent(const Model& M, const State& y, const Vec3& sigma, const 
   // secant (docs/model.md 6, Decision - closing on the tension cap).
   const RateStiffness k = rate_stiffness_over(M, y, dd);
   const Flow f = flow_of(M, sigma, S, k.on_flow);
+  if (cap_applies(M, y)) {
+    // On the cap: Eq. 20 with its flow, or with both at the corner
+    // (docs/model.md 12).
+    Mat3 D;
+    if (capped_tangent(M, y, sigma, S, f, D)) return D;
+  }
   if (yield_function(sigma, S) < -yield_tolerance(M, sigma) || !(f.denominator > 0)) return K.asDiagonal();
   // Eq. 20: dsigma = kS (dd - m dl), dl = dF . kS dd / denominator.
   const Mat3 Ks = k.separation_matrix();

@@ -229,14 +229,14 @@ ValidationError validate(const CompressionCap& cap, const Parameters& p) {
   if (!(cap.Cs >= 0 && cap.Cs <= 1000)) return bad(1, cap.Cs, kCapParameterInfo[1].rule);
   if (!(cap.Gfc >= 1e-6 && cap.Gfc <= 1e4)) return bad(2, cap.Gfc, kCapParameterInfo[2].rule);
   if (!(cap.kappa_p >= 0 && cap.kappa_p <= 100)) return bad(3, cap.kappa_p, kCapParameterInfo[3].rule);
-  // The softened cap (fc/7) contains every traction of the shear-tension
-  // surface at sigma_n >= 0 (|sigma_n| <= ft0, |tau| <= c0): the cap acts on
-  // closed joints only (docs/model.md 12).
+  // The initial cap (fc/3) contains every traction of the shear-tension
+  // surface at sigma_n >= 0 (|sigma_n| <= ft0, |tau| <= c0): it meets the
+  // hyperbola under compression (docs/model.md 12).
   const double reach = std::sqrt(p.ft0 * p.ft0 + cap.Cs * p.c0 * p.c0);
-  if (!(cap.fc / 7 > reach))
+  if (!(cap.fc / 3 > reach))
     return bad(0, cap.fc,
-               "fc/7 > sqrt(ft0^2 + Cs c0^2): the softened cap must lie beyond the shear-tension surface at "
-               "sigma_n >= 0, so that it acts on closed joints only");
+               "fc/3 > sqrt(ft0^2 + Cs c0^2): the initial cap must lie beyond the shear-tension surface at "
+               "sigma_n >= 0, so that the two meet under compression");
   // No snap-back on the cap: its steepest softening, (fc - fc/7)^2 / Gfc at
   // the peak, below the smallest stiffness along its flow, min(kn, Cs ks).
   const double slope = std::pow(cap.fc * 6 / 7, 2) / cap.Gfc;

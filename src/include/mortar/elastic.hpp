@@ -103,6 +103,18 @@ auto inside_by_bounds(const Model& M, T alpha, T beta, Tt t, T s0, T s1, T s2) {
   return q > 0.0 && alpha * alpha + s1 * s1 + s2 * s2 < q * q;
 }
 
+// The traction lies inside the compression cap by more than FTOL whatever
+// its kappa_c: the cap never shrinks below its residual fc/7 (docs/model.md
+// 12), so the proof needs no state of the cap; a point between fc/7 and its
+// cap goes the full path.
+template <class T>
+auto inside_cap_by_bounds(const Model& M, T s0, T s1, T s2) {
+  const T abs_sum = abs_of(s0) + abs_of(s1) + abs_of(s2);
+  const T ftol = M.controls.ftol * max_of(abs_sum, M.stress_scale) * (1 + 1e-12);
+  const T r = M.cap_residual - ftol;
+  return r > 0.0 && s0 * s0 + M.cap.Cs * (s1 * s1 + s2 * s2) < r * r * (1 - 1e-12);
+}
+
 // An elastic increment's start: what Eq. 1 and the proof read (law signs).
 template <class T>
 struct ElasticStart {
@@ -138,8 +150,13 @@ MORTAR_KERNEL_INLINE B elastic_end(const Model& M, const ElasticStart<T>& y, B o
     start[i] = K[i] * e0;
     end[i] = K[i] * (e0 + y.d[i]);
   }
-  const B inside = kept && inside_by_bounds(M, alpha, beta, t, start[0], start[1], start[2]) &&
-                   inside_by_bounds(M, alpha, beta, t, end[0], end[1], end[2]);
+  B inside = kept && inside_by_bounds(M, alpha, beta, t, start[0], start[1], start[2]) &&
+             inside_by_bounds(M, alpha, beta, t, end[0], end[1], end[2]);
+  // A closed joint with a cap: inside it too, at both ends (F_c is convex
+  // along the elastic path).
+  if (M.cap.on())
+    inside = inside && (open || (inside_cap_by_bounds(M, start[0], start[1], start[2]) &&
+                                 inside_cap_by_bounds(M, end[0], end[1], end[2])));
   for (int i = 0; i < 3; ++i) {
     r.separation[i] = y.separation[i] + y.d[i];
     e[i] = r.separation[i] - y.plastic[i];

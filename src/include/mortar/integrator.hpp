@@ -39,7 +39,9 @@ inline bool state_in_range(const State& s) {
 inline bool state_valid(const State& s) {
   const std::array<double, 17> v = finite_state_values(s);
   const bool finite = all_finite(v.data(), int(v.size())), in_range = state_in_range(s);
-  return finite & in_range;
+  // The cap's kappa_c (SDV 36): finite and >= 0 (NaN fails both).
+  const bool cap = (s.kappa_c >= 0.0) & (s.kappa_c <= 1.7976931348623157e308);
+  return finite & in_range & cap;
 }
 
 // The first rule the state breaks, or nullptr (state_valid's rules).

@@ -119,8 +119,8 @@ std::array<double, kPropsWithControls> to_props(const Parameters& p, const Contr
 
 // The compression cap (docs/model.md 12; beyond the paper, after Lourenco &
 // Rots 1997): props(21..24). fc = 0 (or fewer than 21 props) is no cap, and
-// the law is the paper's to the bit. The cap acts on closed joints only: the
-// rule fc/7 > sqrt(ft0^2 + Cs c0^2) keeps the softened cap beyond every
+// the law is the paper's to the bit. The cap acts on closed joints only; the
+// rule fc/3 > sqrt(ft0^2 + Cs c0^2) keeps the initial cap beyond every
 // traction the shear-tension surface allows at sigma_n >= 0.
 struct CompressionCap {
   double fc = 0;       // compressive strength of the joint          [MPa]   0 (no cap), or [1e-3, 1000]

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cap.hpp"
 #include "mortar/integration/relaxation.hpp"
 #include "mortar/integration/root_finder.hpp"
 
@@ -57,14 +58,23 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   // until a relaxation replaces `at` below, after S's last use.
   SurfaceAt at = surface_at(M_, P_);
   const Surface& S = at.S;
-  auto F_at = [&](double a) { return yield_function(K.cwiseProduct(e0 + a * rest), S); };
+  capped_ = cap_applies(M_, P_.y);
+  kappa_c_ = P_.y.kappa_c;
+  auto F_at = [&](double a) { return trial_yield(K.cwiseProduct(e0 + a * rest), S); };
   auto tol_at = [&](double a) { return yield_tolerance(M_, K.cwiseProduct(e0 + a * rest)); };
   auto sample = [&](double a) { return RootSample{F_at(a), tol_at(a)}; };
-  const double F0 = yield_of(P_, at), tol0 = tol_at(0);
+  const double F0 = capped_ ? trial_yield(P_.sigma, S) : yield_of(P_, at), tol0 = tol_at(0);
   const Vec3 n = flow_of(M_, P_.sigma, S, rate_stiffness(M_, P_.y).on_flow, at.radius).dF;
   const Vec3 dsig = K.cwiseProduct(rest);
   const bool on_surface = std::abs(F0) <= tol0;
-  const bool loading = n.dot(dsig) > 0;
+  bool loading = n.dot(dsig) > 0;
+  if (capped_) {
+    // Loading from the surface: a surface the point is on (within FTOL)
+    // rises along the secant trial (docs/model.md 12).
+    const bool on1 = yield_of(P_, at) >= -tol0, onc = cap_function(M_, P_.sigma, kappa_c_) >= -tol0;
+    const double sc = cap_gradient(M_, P_.sigma).dot(dsig);
+    loading = (on1 && n.dot(dsig) > 0) || (onc && sc > 0);
+  }
   // On the surface, loading is decided by the direction of the secant
   // (elastic) predictor, dF . K dd > 0, however small its rise: the same for
   // every cut of the increment and every scheme (docs/model.md 7.1, Decision -
@@ -84,13 +94,13 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   double a_y = 0;
   const bool relaxed = F0 > tol0 && scheme_.traits.relaxes_start_outside;
   if (relaxed) {
-    if (!relax(M_, P_, st_, false)) {
+    if (!(capped_ ? return_to_surfaces() : relax(M_, P_, st_, false))) {
       st_.failure = Failure::relaxation_failed;
       return 0;
     }
   } else if (F0 < -tol0) {
     a_y = pegasus(sample, 0, F0, frac, F_at(frac), 100);
-  } else if (on_surface && n.dot(dsig) < -1e-9 * n.norm() * dsig.norm()) {
+  } else if (on_surface && (capped_ ? !loading : n.dot(dsig) < -1e-9 * n.norm() * dsig.norm())) {
     // On the surface but unloading first, and outside at the end: the
     // secant trial re-enters the surface where a finely cut path yields
     // again (docs/model.md 7.1, Decision - unloading, then reloading).
@@ -102,6 +112,8 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
     P_.sigma = traction_of(M_, P_.y);
     if (tangent_) intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
   }
+  // The cap's intersection and steps carry no tangent (docs/model.md 12).
+  if (capped_ && tangent_) tangent_.lost = true;
   // The return at fixed separation changes the works; the elastic part only
   // the traction.
   if (relaxed) {
@@ -124,7 +136,7 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
 // (docs/model.md 7.1, Decision - unloading, then reloading).
 double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
                                      const Surface& S) const {
-  auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
+  auto F_at = [&](double x) { return trial_yield(K.cwiseProduct(e0 + x * rest), S); };
   auto sample = [&](double x) { return RootSample{F_at(x), yield_tolerance(M_, K.cwiseProduct(e0 + x * rest))}; };
   // A dip of more than a tenth: found on a ten-point scan, as before
   // (its answers unchanged to the bit), then the same root by Pegasus.
@@ -138,7 +150,7 @@ double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& 
     const double a = 0.5 * (lo + hi);
     const RootSample f = sample(a);
     if (f.value < -f.tolerance) return pegasus(sample, a, f.value, frac, F_at(frac), 100);
-    const double slope = flow_of(M_, K.cwiseProduct(e0 + a * rest), S, K).dF.dot(dsig);
+    const double slope = trial_slope(K.cwiseProduct(e0 + a * rest), S, K, dsig);
     (slope < 0 ? lo : hi) = a;
   }
   return 0;
@@ -149,11 +161,11 @@ double IncrementIntegration::reentry(double frac, const Vec3& rest, const Vec3& 
 // its tangent can be checked by finite differences (docs/model.md 7.5).
 double IncrementIntegration::refine_intersection(double a, double frac, const Vec3& rest, const Vec3& K,
                                                  const Vec3& e0, const Surface& S) const {
-  auto F_at = [&](double x) { return yield_function(K.cwiseProduct(e0 + x * rest), S); };
+  auto F_at = [&](double x) { return trial_yield(K.cwiseProduct(e0 + x * rest), S); };
   double f = F_at(a);
   for (int it = 0; it < 4 && f != 0; ++it) {
     const Vec3 sigma = K.cwiseProduct(e0 + a * rest);
-    const double slope = flow_of(M_, sigma, S, K).dF.dot(K.cwiseProduct(rest));
+    const double slope = trial_slope(sigma, S, K, K.cwiseProduct(rest));
     if (!(slope > 0)) break;
     const double an = std::clamp(a - f / slope, 0.0, frac);
     const double fn = F_at(an);
@@ -177,12 +189,34 @@ bool IncrementIntegration::switch_regime() {
   ++st_.regime_switches;
   disintegrate_if_no_strength(M_, P_.y);
   P_.sigma = traction_of(M_, P_.y);
-  if (outside_surface(M_, P_)) {
+  capped_ = cap_applies(M_, P_.y);
+  if (outside_surface(M_, P_) || (capped_ && cap_function(M_, P_.sigma, P_.y.kappa_c) > yield_tolerance(M_, P_.sigma))) {
     // The return depends on where the switch happened: treated as fixed.
     tangent_.lost = true;
-    return relax(M_, P_, st_, false);
+    return return_to_surfaces();
   }
   return true;
+}
+
+// F of a secant trial traction: Eq. 2's, or the larger of it and the cap's
+// on a closed joint with a cap (kappa_c fixed along the elastic part).
+double IncrementIntegration::trial_yield(const Vec3& sigma, const Surface& S) const {
+  const double F = yield_function(sigma, S);
+  return capped_ ? std::max(F, cap_function(M_, sigma, kappa_c_)) : F;
+}
+// Its slope along dsig: that of the surface that gives trial_yield.
+double IncrementIntegration::trial_slope(const Vec3& sigma, const Surface& S, const Vec3& K, const Vec3& dsig) const {
+  if (capped_ && cap_function(M_, sigma, kappa_c_) > yield_function(sigma, S))
+    return cap_gradient(M_, sigma).dot(dsig);
+  return flow_of(M_, sigma, S, K).dF.dot(dsig);
+}
+
+// The return at fixed separation onto Eq. 2 (relax), then onto the cap where
+// it applies (return_to_cap, the corner included).
+bool IncrementIntegration::return_to_surfaces() {
+  if (outside_surface(M_, P_) && !relax(M_, P_, st_, false)) return false;
+  if (!cap_applies(M_, P_.y)) return true;
+  return return_to_cap(M_, P_, st_);
 }
 
 }  // namespace mortar

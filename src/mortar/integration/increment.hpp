@@ -46,6 +46,9 @@ class IncrementIntegration {
   double refine_intersection(double a, double frac, const Vec3& rest, const Vec3& K, const Vec3& e0,
                              const Surface& S) const;
   bool switch_regime();
+  double trial_yield(const Vec3& sigma, const Surface& S) const;
+  double trial_slope(const Vec3& sigma, const Surface& S, const Vec3& K, const Vec3& dsig) const;
+  bool return_to_surfaces();
 
   const Model& M_;
   Point& P_;
@@ -55,6 +58,8 @@ class IncrementIntegration {
   Substepper substepper_;
   bool at_boundary_ = false;
   bool ended_plastic_ = false;
+  bool capped_ = false;  // the segment's joint is closed and has a cap (cap_applies)
+  double kappa_c_ = 0;   // its kappa_c, fixed along the elastic part
 };
 
 }  // namespace mortar

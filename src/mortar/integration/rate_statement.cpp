@@ -1,5 +1,7 @@
 #include "mortar/integration/rate_statement.hpp"
 
+#include "mortar/integration/cap.hpp"
+
 namespace mortar {
 
 // Every increment built in place (a default Rates would write its zeros
@@ -55,6 +57,10 @@ Rates stage(const Model& M, const Point& P, const Vec3& dd, Branches allowed) {
 Rates stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec3& dd, Branches allowed) {
   const Surface& S = at.S;
   const ShearRadius& radius = at.radius;
+  if (cap_applies(M, P.y)) {
+    Rates r;
+    if (capped_stage(M, P, at, dd, r)) return r;
+  }
   if (!P.y.open) return branch_rates(M, P, S, radius, dd, true, true);
   // From the most growing candidate the secant rule admits, freeze each
   // component whose damage the candidate's solution would decrease, until

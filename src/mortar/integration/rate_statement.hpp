@@ -15,6 +15,7 @@ struct Rates {
   bool snapback = false;  // no strain-driven solution: consistency denominator <= 0
   bool plastic = false;   // the stage flows (else secant elasticity, or a snap-back)
   Branches grow;          // open regime: the components on their damage-growing branch
+  double dkappa_c = 0;    // the compression cap's multiplier (docs/model.md 12)
 };
 
 // P += w r (everything but the separation, which the caller moves). Inline:
@@ -27,6 +28,7 @@ inline void add(Point& P, const Rates& r, double w) {
   P.y.wII += w * r.dwII;
   P.y.wIII += w * r.dwIII;
   P.y.dissipation_plastic += w * r.dDp;
+  P.y.kappa_c += w * r.dkappa_c;
 }
 
 // Plastic increments for a plastic-multiplier increment dl along the flow.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cap.hpp"
 #include "mortar/integration/drift_correction.hpp"
 
 namespace mortar {
@@ -101,7 +102,7 @@ Attempt ModifiedEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
 // The rest: docs/numerics.md, section 8.
 double ModifiedEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) {
   if (switch_here || !(dT > floor_)) return 0;
-  if (yield_of(Q, at) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0)) {
+  if (yield_of_surfaces(M_, Q, at) > 1e-3 * std::max(Q.sigma.norm(), M_.p.ft0)) {
     last_rejected_ = true;
     return halved(floor_, dT);
   }
@@ -119,7 +120,12 @@ double ModifiedEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_he
 // new regime and returns it to the surface if needed.
 void ModifiedEuler::commit(Point& P, const Point& Q, SurfaceAt& at, const Vec3&, double, double, bool switch_here) {
   P = Q;
-  if (!switch_here) correct_drift(M_, P, at, grow_);
+  if (switch_here) return;
+  correct_drift(M_, P, at, grow_);
+  if (cap_applies(M_, P.y)) {
+    correct_cap_drift(M_, P);
+    at.radius = shear_radius(P.sigma, at.S);
+  }
 }
 
 double ModifiedEuler::next_size(double dT) {
@@ -149,7 +155,12 @@ double local_error(const Model& M_, const Point& P, const Rates& r1, const Rates
   const double e_s =
       softened ? 0.0 : 0.5 * std::abs((r2.dwI - r1.dwI) / M_.p.GIC + (r2.dwII - r1.dwII) / M_.p.GIIC) / left;
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
-  return std::max(e_sigma, std::max(e_s, e_t));
+  const double error = std::max(e_sigma, std::max(e_s, e_t));
+  if (!M_.cap.on()) return error;
+  // The cap's strength, relative to its drop from fc to the residual
+  // (docs/model.md 12): its steepest slope is (fc - fc/7)/Gfc of that drop.
+  const double e_c = 0.5 * std::abs(r2.dkappa_c - r1.dkappa_c) * (M_.cap.fc - M_.cap_residual) / M_.cap.Gfc;
+  return std::max(error, e_c);
 }
 
 // ---------------------------------------------------------------------------
@@ -166,7 +177,19 @@ Failure BackwardEuler::budget_spent(const IntegrationStatus& st) const {
 // The whole plastic part first; a step whose Newton iteration fails is halved
 // (down to the minimum substep, then Failure::local_solve_failed).
 Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const Rates& r1) {
+  cap_step_ = false;
+  // A closed joint whose trial lies beyond the cap, or whose step of Eq. 2
+  // ends beyond it: the step onto the cap or the corner (integration/cap.hpp).
+  const bool capped = cap_applies(M_, P.y);
+  if (capped) {
+    const CapStep c = cap_backward_euler(M_, P, dd, nullptr, st_);
+    if (c.involved) return cap_attempt(c, P, dT, r1);
+  }
   step_ = backward_euler(M_, P, dd, st_, error_control_);
+  if (capped && step_.ok && step_.plastic) {
+    const CapStep c = cap_backward_euler(M_, P, dd, &step_.N, st_);
+    if (c.involved) return cap_attempt(c, P, dT, r1);
+  }
   if (!step_.ok && !P.y.open && P.sigma[0] + M_.p.kn * dd[0] > 0) {
     // No closed-regime solution and a tensile trial: the step may cross into
     // the open regime where no closed point exists; end it on the boundary.
@@ -184,25 +207,42 @@ Attempt BackwardEuler::attempt(const Point& P, const Vec3& dd, double dT, const 
       return a;
     }
   }
-  if (step_.ok) {
-    end_ = step_.N;
-    if (!error_control_) return step_to(end_);
-    // The step's increments against the forward-Euler stage: the difference
-    // is twice backward Euler's local error to leading order (docs/model.md 7.5).
-    error_ = step_error(P, end_, r1, 1.0);
-    if (error_ > implicit_tolerance(M_) && dT > floor_) {
-      last_rejected_ = true;
-      return retry_with(halved(floor_, dT));
-    }
-    if (error_ > implicit_tolerance(M_)) st_.min_substep_hit = true;
-    Attempt a = step_to(end_);
-    a.surface = &end_surface_;
-    return a;
+  if (step_.ok) return end_at(step_.N, P, dT, r1);
+  return halved_or_failed(dT);
+}
+
+// The step's end N accepted as the substep's end, under error control when
+// the scheme has it: the step's increments against the forward-Euler stage
+// differ by twice backward Euler's local error to leading order
+// (docs/model.md 7.5).
+Attempt BackwardEuler::end_at(const Point& N, const Point& P, double dT, const Rates& r1) {
+  end_ = N;
+  if (!error_control_) return step_to(end_);
+  error_ = step_error(P, end_, r1, 1.0);
+  if (error_ > implicit_tolerance(M_) && dT > floor_) {
+    last_rejected_ = true;
+    return retry_with(halved(floor_, dT));
   }
+  if (error_ > implicit_tolerance(M_)) st_.min_substep_hit = true;
+  Attempt a = step_to(end_);
+  a.surface = &end_surface_;
+  return a;
+}
+
+// A failed local solve: halved, down to the minimum substep.
+Attempt BackwardEuler::halved_or_failed(double dT) {
   if (dT > M_.controls.min_substep) return retry_with(halved(M_.controls.min_substep, dT));
   Attempt a{Attempt::fail};
   a.failure = Failure::local_solve_failed;
   return a;
+}
+
+// A step onto the cap or the corner (cap_backward_euler): its tangent is not
+// carried (docs/model.md 12), so the update's tangent becomes approximate.
+Attempt BackwardEuler::cap_attempt(const CapStep& c, const Point& P, double dT, const Rates& r1) {
+  if (!c.ok) return halved_or_failed(dT);
+  cap_step_ = true;
+  return end_at(c.N, P, dT, r1);
 }
 
 // Without error control the step doubles. With it the sizes stay halvings
@@ -222,10 +262,12 @@ double BackwardEuler::step_error(const Point& P, const Point& N, const Rates& r1
   fe.dwI = part * r1.dwI;
   fe.dwII = part * r1.dwII;
   fe.dwIII = part * r1.dwIII;
+  fe.dkappa_c = part * r1.dkappa_c;
   be.dsigma = N.sigma - P.sigma;
   be.dwI = N.y.wI - P.y.wI;
   be.dwII = N.y.wII - P.y.wII;
   be.dwIII = N.y.wIII - P.y.wIII;
+  be.dkappa_c = N.y.kappa_c - P.y.kappa_c;
   shape_into(M_, N.y.wI, N.y.wII, N.y.wIII, end_surface_);
   return local_error(M_, P, fe, be, N, end_surface_);
 }
@@ -242,15 +284,19 @@ void BackwardEuler::before_settle(const Point& Q) {
 // explicit scheme returns it, and the tangent becomes approximate.
 double BackwardEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_here) {
   drift_corrected_ = false;
-  if (switch_here || !(yield_of(Q, at) > 10 * yield_tolerance(M_, Q.sigma))) return 0;
+  if (switch_here || !(yield_of_surfaces(M_, Q, at) > 10 * yield_tolerance(M_, Q.sigma))) return 0;
   if (dT > M_.controls.min_substep) return halved(M_.controls.min_substep, dT);
   correct_drift(M_, Q, at);
+  if (cap_applies(M_, Q.y)) {
+    correct_cap_drift(M_, Q);
+    at.radius = shear_radius(Q.sigma, at.S);
+  }
   drift_corrected_ = true;
   return 0;
 }
 
 void BackwardEuler::commit(Point& P, const Point& Q, SurfaceAt&, const Vec3& dd, double T, double dT, bool) {
-  const bool carry = tangent_ && !drift_corrected_;
+  const bool carry = tangent_ && !drift_corrected_ && !cap_step_;
   if (carry) {
     // This step covers dT/(1 - T) of what is left of the increment.
     Sensitivity& D = *tangent_.D;
@@ -259,7 +305,7 @@ void BackwardEuler::commit(Point& P, const Point& Q, SurfaceAt&, const Vec3& dd,
   }
   P = Q;
   if (carry) settle_sensitivity(M_, pre_settle_, sigma_pre_settle_, P.y, *tangent_.D);
-  if (drift_corrected_) tangent_.forget(st_);
+  if (drift_corrected_ || cap_step_) tangent_.forget(st_);
 }
 
 }  // namespace mortar

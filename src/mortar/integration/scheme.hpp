@@ -8,6 +8,7 @@
 #pragma once
 
 #include "mortar/integration/backward_euler.hpp"
+#include "mortar/integration/cap.hpp"
 #include "mortar/integration/rate_statement.hpp"
 #include "mortar/integration/sensitivity.hpp"
 #include "mortar/result.hpp"
@@ -150,6 +151,9 @@ class BackwardEuler final : public SubstepScheme {
 
  private:
   double step_error(const Point& P, const Point& N, const Rates& r1, double part);
+  Attempt end_at(const Point& N, const Point& P, double dT, const Rates& r1);
+  Attempt halved_or_failed(double dT);
+  Attempt cap_attempt(const CapStep& c, const Point& P, double dT, const Rates& r1);
   const Model& M_;
   IntegrationStatus& st_;
   TangentTracker& tangent_;
@@ -163,6 +167,7 @@ class BackwardEuler final : public SubstepScheme {
   State pre_settle_;
   Vec3 sigma_pre_settle_ = Vec3::Zero();
   bool drift_corrected_ = false;
+  bool cap_step_ = false;  // the last step was onto the cap or the corner
 };
 
 }  // namespace mortar

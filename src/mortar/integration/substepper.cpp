@@ -30,6 +30,8 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
   sep_cuts_ = 0;
   dn_cut_ = CrossingBracket{};
   dn_cuts_ = 0;
+  reach_cut_ = CrossingBracket{};
+  reach_cuts_ = 0;
   double T = 0, dT = 1;
   bool unloaded = false;
   // Every pass of the loop counts against the budget, so no path through
@@ -47,7 +49,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     // it yields again is the segment's to find (the elastic-plastic
     // intersection, increment.cpp), as for a call that starts there; the
     // rate statement from inside would flow at once and keep the gap.
-    if (unloaded && yield_of(P_, surface_at_start_) < -yield_tolerance(M_, P_.sigma)) return T;
+    if (unloaded && yield_of_surfaces(M_, P_, surface_at_start_) < -yield_tolerance(M_, P_.sigma)) return T;
     if (bounded) {
       scheme_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
       apex_.set_floor(min_substep_floor(M_, length, surface_at_start_.S.s_raw));
@@ -101,6 +103,7 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     if (sep == Landing::cut) continue;
     const Landing normal = normal_completion(*a.end, SN, dT);
     if (normal == Landing::cut) continue;
+    if (surface_reached(*a.end, SN, dT) == Landing::cut) continue;
     const bool separates = sep == Landing::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
     if (crossing_kind == Crossing::from_boundary) {
@@ -211,6 +214,27 @@ Substepper::Landing Substepper::normal_completion(const Point& N, const Surface&
   const double g1 = g(N, shear_radius(N.sigma, SN));
   const bool landed = g1 < 0 && g1 >= -1e-9;
   return one_sided(dn_cut_, dn_cuts_, dT, g0, g1, g1 < 0, landed, landed);
+}
+
+// The second surface reached inside the substep (docs/model.md 12): a closed
+// joint with a cap that flows on one of Eq. 2 and the cap, inside the other
+// at the substep's start, and ends beyond it: the substep is shortened to end
+// on it (regula falsi on the substep size in that surface's F), so that where
+// the corner is reached does not depend on the cuts.
+Substepper::Landing Substepper::surface_reached(const Point& N, const Surface& SN, double& dT) {
+  if (!cap_applies(M_, P_.y) || !cap_applies(M_, N.y)) return Landing::none;
+  const double tol = yield_tolerance(M_, P_.sigma);
+  const double F1 = yield_of(P_, surface_at_start_), Fc = cap_function(M_, P_.sigma, P_.y.kappa_c);
+  const bool on1 = F1 >= -tol, onc = Fc >= -tol;
+  if (on1 == onc && !reach_cut_.active) return Landing::none;
+  // The surface the start lies inside (the cap, while a bracket is open on it).
+  const bool cap_is_other = reach_cut_.active ? reach_on_cap_ : on1;
+  const double g0 = cap_is_other ? Fc : F1;
+  const double g1 = cap_is_other ? cap_function(M_, N.sigma, N.y.kappa_c) : yield_function(N.sigma, SN);
+  const double tol1 = yield_tolerance(M_, N.sigma);
+  if (!reach_cut_.active) reach_on_cap_ = cap_is_other;
+  const bool past = g1 > tol1, within = std::abs(g1) <= tol1;
+  return one_sided(reach_cut_, reach_cuts_, dT, g0, g1, past, within, past || within);
 }
 
 // One trial substep of a one-sided bracket on the boundary function g (g0 at

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "mortar/integration/cap.hpp"
 #include "mortar/integration/root_finder.hpp"
 #include "mortar/integration/scheme.hpp"
 
@@ -47,6 +48,7 @@ class Substepper {
   };
   Landing separation(const Surface& SN, double& dT);
   Landing normal_completion(const Point& N, const Surface& SN, double& dT);
+  Landing surface_reached(const Point& N, const Surface& SN, double& dT);
   Landing one_sided(CrossingBracket& b, int& cuts, double& dT, double g0, double g1, bool past, bool within,
                     bool lands);
   double end_on_boundary(const Point& N, double done);
@@ -65,6 +67,9 @@ class Substepper {
   int sep_cuts_ = 0;
   CrossingBracket dn_cut_;
   int dn_cuts_ = 0;
+  CrossingBracket reach_cut_;  // the second surface reached (the cap, or Eq. 2 from the cap)
+  int reach_cuts_ = 0;
+  bool reach_on_cap_ = false;
 };
 
 // The apex zone of a worn open joint (docs/model.md 6, Decision - the apex
