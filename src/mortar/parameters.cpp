@@ -173,6 +173,7 @@ Model make_model(const Parameters& p, const Controls& c, const CompressionCap& c
   m.cap = cap;
   m.cap_initial = cap.fc / 3;
   m.cap_residual = cap.fc / 7;
+  m.cap_softening_span = cap.on() ? 588 * cap.Gfc / (481 * cap.fc) : 0.0;
   m.p = p;
   m.controls = c;
   m.tan_phi0 = std::tan(p.phi0 * kDegree);
@@ -237,13 +238,14 @@ ValidationError validate(const CompressionCap& cap, const Parameters& p) {
     return bad(0, cap.fc,
                "fc/3 > sqrt(ft0^2 + Cs c0^2): the initial cap must lie beyond the shear-tension surface at "
                "sigma_n >= 0, so that the two meet under compression");
-  // No snap-back on the cap: its steepest softening, (fc - fc/7)^2 / Gfc at
-  // the peak, below the smallest stiffness along its flow, min(kn, Cs ks).
-  const double slope = std::pow(cap.fc * 6 / 7, 2) / cap.Gfc;
+  // No snap-back on the cap: its steepest softening, fc / (kappa_m -
+  // kappa_p) = 481 fc^2 / (588 Gfc) at kappa_m, below the smallest stiffness
+  // along its flow, min(kn, Cs ks).
+  const double slope = 481 * cap.fc * cap.fc / (588 * cap.Gfc);
   const double stiff = cap.Cs > 0 ? std::min(p.kn, cap.Cs * p.ks) : p.kn;
   if (!(slope < stiff))
     return bad(2, cap.Gfc,
-               "Gfc > (6 fc/7)^2 / min(kn, Cs ks): crushing must soften more slowly than the joint unloads "
+               "Gfc > 481 fc^2 / (588 min(kn, Cs ks)): crushing must soften more slowly than the joint unloads "
                "(no snap-back of the point)");
   return {};
 }

@@ -46,6 +46,7 @@ inline std::vector<Cell> fine_cells(const std::string& family, double h) {
       {"cap", {"vdP-0.1", "M15", "rnd1"}, {"M34", "rnd2"}},
       {"open-shear-close", {"vdP-0.5", "Atk", "rnd1"}, {"M15", "rnd0"}},
       {"slip3d", {"vdP-1.0", "M34", "rnd1"}, {"vdP-0.1", "rnd2"}},
+      {"crush", {"vdP-0.5", "Atk", "rnd0"}, {"M15", "rnd1"}},
       {"random-jumps",
        {"vdP-0.1", "vdP-0.5", "vdP-1.0", "M15", "M34", "Atk", "rnd0", "rnd1", "rnd2"},
        {"vdP-0.1", "vdP-0.5", "vdP-1.0", "M15", "M34", "Atk", "rnd0", "rnd1", "rnd2"}},
@@ -92,7 +93,8 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
                         const std::vector<int>& tight_calls = {1, 20}, const std::vector<int>& default_calls = {1},
                         bool implicit = false) {
   const Path w = path_of(family, ns.p, seed_of(ns.name), c.reach);
-  const mortar::Model Mt = mortar::make_model(ns.p, tight()), Md = mortar::make_model(ns.p, mortar::Controls{});
+  const mortar::CompressionCap cap = cap_for(family, ns.p);
+  const mortar::Model Mt = mortar::make_model(ns.p, tight(), cap), Md = mortar::make_model(ns.p, mortar::Controls{}, cap);
   const Run ref = drive(Mt, w, c.h, kReferenceCalls);
   Measured m;
   m.increments = ref.traction.size();
@@ -116,7 +118,7 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
   if (implicit) {
     mortar::Controls ci;
     ci.scheme = mortar::Scheme::implicit;
-    const Run r = drive(mortar::make_model(ns.p, ci), w, c.h, 1);
+    const Run r = drive(mortar::make_model(ns.p, ci, cap), w, c.h, 1);
     m.implicit_failures = r.failures;
     m.implicit_work = r.worst_work;
     m.implicit = worst(r.traction, ref.traction, m.peak);

@@ -62,3 +62,15 @@ TEST_CASE("Splitting: 3D slip with direction changes, h = 1e-4 and 1e-5 mm", "[s
   check_cells("slip3d", fine_cells("slip3d", 1e-4));
   check_cells("slip3d", fine_cells("slip3d", 1e-5));
 }
+
+// Proves the compression cap (model.md 12) is cut-independent: the yield on
+// the cap, its hardening and softening, the corner with the hyperbola (Koiter,
+// two multipliers), a slip reversal on the cap, opening and reloading onto the
+// softened cap.
+TEST_CASE("Splitting: crushing on the compression cap, through the corner, h = 1e-3 mm", "[splitting][cap]") {
+  check_cells("crush", all_cells(1e-3));
+}
+TEST_CASE("Splitting: crushing on the compression cap, h = 1e-4 and 1e-5 mm", "[splitting][cap]") {
+  check_cells("crush", fine_cells("crush", 1e-4));
+  check_cells("crush", fine_cells("crush", 1e-5));
+}

@@ -65,8 +65,22 @@ struct Leg {
 using Path = std::vector<Leg>;
 
 inline const std::vector<std::string>& families() {
-  static const std::vector<std::string> f = {"separation", "cap", "open-shear-close", "slip3d", "random-jumps"};
+  static const std::vector<std::string> f = {"separation", "cap", "open-shear-close", "slip3d", "random-jumps",
+                                             "crush"};
   return f;
+}
+
+// The compression cap of the "crush" family for set p (docs/model.md 12):
+// Cs = 9 (Lourenco's), fc four times the bound of its rule (fc/3 >
+// sqrt(ft0^2 + Cs c0^2)), Gfc twice the bound of its snap-back rule, the
+// peak at a plastic closure kappa_p = fc/kn. Every other family has none.
+inline mortar::CompressionCap crush_cap(const Parameters& p) {
+  const double Cs = 9, fc = 4 * std::sqrt(p.ft0 * p.ft0 + Cs * p.c0 * p.c0);
+  const double Gfc = 2 * 481 * fc * fc / (588 * std::min(p.kn, Cs * p.ks));
+  return {fc, Cs, Gfc, fc / p.kn};
+}
+inline mortar::CompressionCap cap_for(const std::string& family, const Parameters& p) {
+  return family == "crush" ? crush_cap(p) : mortar::CompressionCap{};
 }
 
 // The joint's own lengths: elastic limits in tension and shear, softening
@@ -144,6 +158,16 @@ inline Path path_of(const std::string& family, const Parameters& p, unsigned see
   } else if (family == "open-shear-close") {
     const double L = reach * std::min(2 * u, 0.04);
     add({Vec3(L, 0, 0), Vec3(L, L, 0), Vec3(-2 * e0, L, 0), Vec3(-2 * e0, 2 * L, 0)});
+  } else if (family == "crush") {
+    // With the cap of crush_cap: pressed to 0.3 fc, slid onto the cap, along
+    // it (its flow closes the joint plastically, so the pressure falls) and
+    // through the corner onto the hyperbola; crushed past the peak with the
+    // slip held, the slip turned and reversed, the joint opened, then closed
+    // and pressed onto the softened cap again.
+    const mortar::CompressionCap c = crush_cap(p);
+    const double a = -0.3 * c.fc / p.kn, soft = reach * (c.kappa_p + 2 * c.Gfc / c.fc);
+    const double s = reach * 3 * c.fc / p.ks, b = -(c.fc / p.kn + soft);
+    add({Vec3(a, 0, 0), Vec3(a, s, 0), Vec3(b, s, 0), Vec3(b, -s, s), Vec3(2 * e0, -s, s), Vec3(b - 0.5 * soft, 0, 0)});
   } else if (family == "slip3d") {
     // Under compression (sigma_n about -ft0), the slip turning by 90 degrees
     // and reversing.

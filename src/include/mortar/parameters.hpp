@@ -125,7 +125,7 @@ std::array<double, kPropsWithControls> to_props(const Parameters& p, const Contr
 struct CompressionCap {
   double fc = 0;       // compressive strength of the joint          [MPa]   0 (no cap), or [1e-3, 1000]
   double Cs = 0;       // shear share of the cap, sigma_n^2 + Cs tau^2 [-]    [0, 1000]
-  double Gfc = 0;      // compressive fracture energy above fc/7     [N/mm]  [1e-6, 1e4]
+  double Gfc = 0;      // compressive fracture energy above fc/7     [N/mm]  [1e-6, 1e4], > 481 fc^2/(588 min(kn, Cs ks))
   double kappa_p = 0;  // plastic closure at the peak fc             [mm]    [0, 100]
   bool on() const { return fc > 0; }
 };
@@ -172,6 +172,7 @@ struct Model {
   // strengths fc/3, fc/7 (docs/model.md 12) [MPa].
   CompressionCap cap;
   double cap_initial = 0, cap_residual = 0;
+  double cap_softening_span = 0;  // kappa_m - kappa_p = 588 Gfc / (481 fc) [mm]
 };
 
 // Builds a Model from validated inputs (call validate first). Non-throwing.

@@ -171,14 +171,19 @@ CapSolution solve_corner(const Model& M, const Point& P, const Vec3& sigma_e, Ca
 }  // namespace
 
 bool capped_stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec3& dd, Rates& r) {
-  const double tol = yield_tolerance(M, P.sigma);
+  const double tol = on_surface_band(M, P.sigma);
   const CapStrength cs = cap_strength(M, P.y.kappa_c);
-  if (cap_radius(M, P.sigma) - cs.value < -tol) return false;
+  const bool on1 = yield_of(P, at) >= -tol;
   const Vec3 K = closed_stiffness(M), Kdd = K.cwiseProduct(dd);
+  if (cap_radius(M, P.sigma) - cs.value < -tol) {
+    if (on1) return false;
+    r = Rates{};
+    r.dsigma = Kdd;
+    return true;
+  }
   const Vec3 nc = cap_gradient(M, P.sigma), Knc = K.cwiseProduct(nc);
   const double dc = nc.dot(Knc) + cs.slope;  // > 0 by the rule on Gfc (docs/model.md 12)
   const Flow f = flow_of(M, P.sigma, at.S, K, at.radius);
-  const bool on1 = yield_of(P, at) >= -tol;
   const double a1 = on1 ? f.dF.dot(Kdd) : 0.0, ac = nc.dot(Kdd);
   // Koiter's rule: the corner where both multipliers come out positive.
   if (on1 && (a1 > 0 || ac > 0)) {

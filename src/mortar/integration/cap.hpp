@@ -25,10 +25,18 @@ inline double yield_of_surfaces(const Model& M, const Vec3& sigma, const Surface
   return std::max(F, cap_function(M, sigma, y.kappa_c));
 }
 
+// The band within which a closed point with a cap counts as on a surface in
+// the rate statement: FTOL, or where larger STOL of the traction, within
+// which an accepted substep ends (docs/model.md 12).
+inline double on_surface_band(const Model& M, const Vec3& sigma) {
+  return std::max(yield_tolerance(M, sigma), M.controls.stol * std::max(sigma.norm(), M.stress_scale));
+}
+
 // The rate statement of a closed joint on the cap (F_c >= -FTOL) over dd:
 // the active set by Koiter's rule (the corner when both multipliers come out
 // positive, else the one surface loaded that the other does not see
-// violated). False when P is not on the cap: the one-surface stage applies.
+// violated); elastic where P is on neither. False when P is on Eq. 2 alone:
+// the one-surface stage applies.
 bool capped_stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec3& dd, Rates& r);
 
 // After an accepted explicit substep: a closed point beyond the cap returns

@@ -157,9 +157,9 @@ double local_error(const Model& M_, const Point& P, const Rates& r1, const Rates
   const double e_t = 0.5 * M_.p.m * std::abs(r2.dwIII - r1.dwIII);
   const double error = std::max(e_sigma, std::max(e_s, e_t));
   if (!M_.cap.on()) return error;
-  // The cap's strength, relative to its drop from fc to the residual
-  // (docs/model.md 12): its steepest slope is (fc - fc/7)/Gfc of that drop.
-  const double e_c = 0.5 * std::abs(r2.dkappa_c - r1.dkappa_c) * (M_.cap.fc - M_.cap_residual) / M_.cap.Gfc;
+  // The cap's strength, relative to fc (docs/model.md 12): its steepest
+  // softening slope is fc / (kappa_m - kappa_p).
+  const double e_c = 0.5 * std::abs(r2.dkappa_c - r1.dkappa_c) / M_.cap_softening_span;
   return std::max(error, e_c);
 }
 

@@ -223,7 +223,7 @@ Substepper::Landing Substepper::normal_completion(const Point& N, const Surface&
 // the corner is reached does not depend on the cuts.
 Substepper::Landing Substepper::surface_reached(const Point& N, const Surface& SN, double& dT) {
   if (!cap_applies(M_, P_.y) || !cap_applies(M_, N.y)) return Landing::none;
-  const double tol = yield_tolerance(M_, P_.sigma);
+  const double tol = on_surface_band(M_, P_.sigma);
   const double F1 = yield_of(P_, surface_at_start_), Fc = cap_function(M_, P_.sigma, P_.y.kappa_c);
   const bool on1 = F1 >= -tol, onc = Fc >= -tol;
   if (on1 == onc && !reach_cut_.active) return Landing::none;

@@ -14,9 +14,11 @@
 
 namespace mortar {
 
-// sigma_c(kappa_c) and its slope (docs/model.md 12): from fc/3 up a parabola
-// to fc at kappa_p (zero slope there), then exponentially down to the
-// residual fc/7, the area between the curve and the residual being Gfc.
+// sigma_c(kappa_c) and its slope (docs/model.md 12), continuous with its
+// slope: from fc/3 up a parabola to fc at kappa_p (zero slope there), down a
+// parabola to fc/2 at kappa_m, then exponentially to the residual fc/7 (the
+// three pieces of Lourenco & Rots). kappa_m - kappa_p = 588 Gfc / (481 fc)
+// makes the area between the curve and the residual after the peak Gfc.
 struct CapStrength {
   double value = 0, slope = 0;
 };
@@ -27,9 +29,14 @@ inline CapStrength cap_strength(const Model& M, double kappa_c) {
     const double x = k / c.kappa_p, rise = c.fc - M.cap_initial;
     return {M.cap_initial + rise * x * (2 - x), 2 * rise * (1 - x) / c.kappa_p};
   }
-  const double drop = c.fc - M.cap_residual, rate = drop / c.Gfc;
-  const double e = std::exp(-rate * (k - c.kappa_p));
-  return {M.cap_residual + drop * e, -rate * drop * e};
+  const double span = M.cap_softening_span, mid = 0.5 * c.fc;
+  if (k < c.kappa_p + span) {
+    const double h = (k - c.kappa_p) / span;
+    return {c.fc + (mid - c.fc) * h * h, 2 * (mid - c.fc) * h / span};
+  }
+  const double slope_m = 2 * (mid - c.fc) / span, above = mid - M.cap_residual;
+  const double e = std::exp(slope_m * (k - c.kappa_p - span) / above);
+  return {M.cap_residual + above * e, slope_m * e};
 }
 
 // sqrt(sigma_n^2 + Cs tau^2): the cap's radius of a traction.
