@@ -86,6 +86,10 @@ struct Measured {
   // per increment, against the same reference (measured on request).
   double implicit = -1;
   long implicit_failures = 0, implicit_work = 0;
+  // Increments left out of the errors, over every run compared: one run
+  // dropped at fixed separation there and the reference did not, or the
+  // other way round (worst, splitting_paths.hpp).
+  long drops_apart = 0;
   bool any_failure() const { return reference_failures + tight_failures + default_failures > 0; }
 };
 
@@ -105,14 +109,16 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
     const Run r = drive(Mt, w, c.h, n);
     m.tight_failures += r.failures;
     m.tight_work = std::max(m.tight_work, r.worst_work);
-    m.tight_by_calls.push_back(worst(r.traction, ref.traction, m.peak));
+    m.tight_by_calls.push_back(worst(r, ref, m.peak));
+    m.drops_apart += count_drops_apart(r, ref);
     m.tight = std::max(m.tight, m.tight_by_calls.back());
   }
   for (int n : default_calls) {
     const Run r = drive(Md, w, c.h, n);
     m.default_failures += r.failures;
     m.default_work = std::max(m.default_work, r.worst_work);
-    m.default_by_calls.push_back(worst(r.traction, ref.traction, m.peak));
+    m.default_by_calls.push_back(worst(r, ref, m.peak));
+    m.drops_apart += count_drops_apart(r, ref);
     m.defaults = std::max(m.defaults, m.default_by_calls.back());
   }
   if (implicit) {
@@ -121,7 +127,8 @@ inline Measured measure(const std::string& family, const NamedSet& ns, const Cel
     const Run r = drive(mortar::make_model(ns.p, ci, cap), w, c.h, 1);
     m.implicit_failures = r.failures;
     m.implicit_work = r.worst_work;
-    m.implicit = worst(r.traction, ref.traction, m.peak);
+    m.implicit = worst(r, ref, m.peak);
+    m.drops_apart += count_drops_apart(r, ref);
   }
   return m;
 }

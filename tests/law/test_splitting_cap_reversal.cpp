@@ -13,7 +13,7 @@ namespace {
 double worst_of(const mortar::Model& M, const Path& w, double h, int calls, const Run& ref, double pk) {
   const Run r = drive(M, w, h, calls);
   CHECK(r.failures == 0);
-  return worst(r.traction, ref.traction, pk);
+  return worst(r, ref, pk);
 }
 }  // namespace
 
