@@ -85,7 +85,7 @@ TEST_CASE("UINTER cap: 20 props and 24 with fc = 0 give the same results bit for
   CHECK(off.statev[cap_slot::kappa_c] == -7.5);
 }
 
-TEST_CASE("UINTER cap: kappa_c round-trips through SDV 36; a corrupted one is an invalid state", "[uinter][cap]") {
+TEST_CASE("UINTER cap: kappa_c round-trips through SDV 36, and a corrupted one is an invalid state", "[uinter][cap]") {
   Point pt = capped_point(30.0, mortar::kCappedStateCountDouble);
   double r[3] = {0, 0, 0};
   const double pressed[3] = {1e-4, 0, 0};
