@@ -115,7 +115,7 @@ TEST_CASE("fast paths: an elastic block goes through the lanes", "[fast_paths]")
   CHECK(plastic.full == 17);
 }
 
-TEST_CASE("fast paths: a deck with a compression cap takes no lanes; with fc = 0 it takes them as before",
+TEST_CASE("fast paths: a deck with a compression cap takes no lanes, with fc = 0 it takes them as before",
           "[fast_paths][cap]") {
   const double fc = GENERATE(0.0, 30.0);
   CAPTURE(fc);
