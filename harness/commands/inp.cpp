@@ -3,7 +3,6 @@
 #include "commands/run.hpp"
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
-#include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
 
 namespace mortar::harness {
@@ -20,12 +19,8 @@ int inp_command(const InpArgs& a, std::ostream& out) {
   const bool controls = !a.scheme.empty() || a.stol != 0;
   InpOptions o;
   o.name = a.name;
-  // Abaqus/Explicit loads the single-precision routine unless the job says
-  // double=both; it keeps its state as float pairs only with DEPVAR >= 34
-  // (docs/model.md 3), and either routine records the integration flags in
-  // SDV 35 with DEPVAR >= 35 (docs/model.md 9).
-  o.depvar = kFlaggedStateCount;
-  o.props = deck_props(params.values, controls, !a.scheme.empty(), scheme, a.stol);
+  o.props = deck_props(params.values, controls, !a.scheme.empty(), scheme, a.stol, params.cap);
+  o.depvar = deck_depvar(o.props, false);
   write_surface_interaction(out, o);
   return 0;
 }

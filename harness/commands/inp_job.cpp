@@ -42,7 +42,7 @@ int two_block_job(const InpArgs& a, std::ostream& out) {
   const bool standard = a.two_blocks == "standard";
   const bool controls = !a.scheme.empty() || a.stol != 0;
   const Scheme scheme = a.scheme.empty() ? Scheme::modified_euler : scheme_names().at(a.scheme);
-  write_two_block_deck(out, deck_props(params.values, controls, !a.scheme.empty(), scheme, a.stol),
+  write_two_block_deck(out, deck_props(params.values, controls, !a.scheme.empty(), scheme, a.stol, params.cap),
                        standard ? DeckSolver::standard_contact_pair : DeckSolver::explicit_general_contact);
   return 0;
 }

@@ -130,6 +130,7 @@ int run_implicit(const RunArgs& a, std::ostream& err) {
   settings.options.max_cuts = a.max_cuts;
   settings.options.symmetric_tangent = a.symmetric_tangent;
   const ParameterSet params = read_parameter_file(a.params);
+  settings.cap = params.cap;
   const Protocol protocol = read_protocol_file(a.protocol);
   JointTest scene(protocol, 1);
   RunOutput output(a);
@@ -171,6 +172,7 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
   RunSettings settings;
   settings.scheme = scheme_names().at(a.scheme.empty() ? "modified-euler" : a.scheme);
   settings.stol = a.stol;
+  settings.cap = params.cap;
   settings.block = a.block;
   settings.mixed.traction_tolerance = a.traction_tol;
   JointTest scene(protocol, a.points);

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "mortar/parameters.hpp"
+#include "mortar/state_layout.hpp"
 
 namespace mortar::harness {
 
@@ -37,19 +38,31 @@ std::string abaqus_name_problem(const std::string& name) {
 namespace {
 std::string prop_name(size_t i) {
   if (i < static_cast<size_t>(kParameterCount)) return kParameterInfo[i].name;
-  static const char* controls[] = {"scheme", "STOL", "FTOL", "max substeps", "min substep"};
-  return i - kParameterCount < 5 ? controls[i - kParameterCount] : "unused";
+  static const char* controls[] = {"scheme", "STOL", "FTOL", "max substeps", "min substep", "shear sign"};
+  if (i - kParameterCount < 6) return controls[i - kParameterCount];
+  return i - kCapFirstProp < static_cast<size_t>(kCapCount) ? kCapParameterInfo[i - kCapFirstProp].name : "unused";
 }
 }  // namespace
 
-std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol) {
+std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol,
+                               const CompressionCap& cap) {
   Controls c;
   c.scheme = scheme;
   c.stol = stol;
   const auto props = to_props(p, c);
   std::vector<double> out(props.begin(), props.begin() + kParameterCount + (controls ? 2 : 0));
   if (controls && !scheme_given) out[kParameterCount] = 0.0;
+  if (cap.on()) {
+    out.resize(kCapFirstProp + kCapCount, 0.0);
+    for (int i = 0; i < kCapCount; ++i) out[static_cast<size_t>(kCapFirstProp + i)] = cap_parameter_at(cap, i);
+  }
   return out;
+}
+
+int deck_depvar(const std::vector<double>& props, bool standard) {
+  const bool cap = props.size() > static_cast<size_t>(kCapFirstProp) && props[kCapFirstProp] > 0;
+  if (standard) return cap ? kCappedStateCountDouble : kStateCount;
+  return cap ? kCappedStateCountSingle : kFlaggedStateCount;
 }
 
 void write_surface_interaction(std::ostream& out, const InpOptions& o) {

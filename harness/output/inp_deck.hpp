@@ -32,7 +32,17 @@ void write_surface_interaction(std::ostream& out, const InpOptions& options);
 
 // props(1..14), and props(15..16) (scheme, STOL; 0 = the routine's default)
 // when `controls`: absent props, and zero ones, mean the routine's defaults.
-std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol);
+// With cap.on(), props(21..24) too (props(15..20) 0 where not given).
+std::vector<double> deck_props(const Parameters& p, bool controls, bool scheme_given, Scheme scheme, double stol,
+                               const CompressionCap& cap = CompressionCap{});
+
+// The DEPVAR of a deck with `props`: Abaqus/Explicit loads the
+// single-precision routine unless the job says double=both; it keeps its
+// state as float pairs with DEPVAR >= 34 and either routine the integration
+// flags with DEPVAR >= 35 (docs/model.md 3, 9): 35; with a cap (props(21) =
+// fc > 0) kappa_c's float pair in SDV 36-37: 37. UINTER (`standard`, double
+// precision): the law's 23, with a cap 36.
+int deck_depvar(const std::vector<double>& props, bool standard);
 
 // Shortest decimal text that reads back as exactly x.
 std::string exact_decimal(double x);

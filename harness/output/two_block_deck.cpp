@@ -3,7 +3,6 @@
 #include <ostream>
 #include <string>
 
-#include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
 #include "output/inp_mesh.hpp"
 
@@ -61,7 +60,7 @@ void write_two_block_deck(std::ostream& out, const std::vector<double>& props, D
   o.name = "MORTAR";
   o.props = props;
   o.standard = standard;
-  o.depvar = standard ? kStateCount : kFlaggedStateCount;
+  o.depvar = deck_depvar(props, standard);
   write_surface_interaction(out, o);
 
   if (standard) {

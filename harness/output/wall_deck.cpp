@@ -8,7 +8,6 @@
 #include <stdexcept>
 #include <string>
 
-#include "mortar/state_layout.hpp"
 #include "output/inp_deck.hpp"
 #include "output/inp_mesh.hpp"
 
@@ -193,9 +192,10 @@ class WallDeck {
             faces[r][k].push_back(f);
     }
     InpOptions o;
-    o.depvar = kFlaggedStateCount;
     const bool controls = s_.scheme != Scheme::modified_euler || s_.stol != 0;
-    o.props = deck_props(s_.joint.values, controls, s_.scheme != Scheme::modified_euler, s_.scheme, s_.stol);
+    o.props = deck_props(s_.joint.values, controls, s_.scheme != Scheme::modified_euler, s_.scheme, s_.stol,
+                         s_.joint.cap);
+    o.depvar = deck_depvar(o.props, false);
     for (int r = 0; r < kRoles; ++r) {
       if (faces[r][0].empty()) continue;
       roles_.push_back(r);

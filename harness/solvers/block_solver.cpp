@@ -135,8 +135,8 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   const auto clock_start = std::chrono::steady_clock::now();
   AbiSetup setup;
   setup.n_dir = 2;
-  setup.n_states = kFlaggedStateCount;  // SDV 1-23 and the integration flags (SDV 35)
-  setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol);
+  setup.n_states = state_count_for(scene_.joint.cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
+  setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol, 0, scene_.joint.cap);
   setup.stiffness_default = scene_.joint.values.kn;
   JointCalls joints(model_, setup, options_.block, options_.threads);
 

@@ -19,10 +19,11 @@ class ExplicitSolver : public MockSolver {
       : block_(settings.block) {
     AbiSetup setup;
     setup.n_dir = scene.directions();
-    // The double routine's layout with the integration flags (SDV 35); it
-    // leaves SDV 24-34, single precision's pairs, as they are.
-    setup.n_states = kFlaggedStateCount;
-    setup.props = props_for(parameters, settings.scheme, settings.stol);
+    // The double routine's layout with the integration flags (SDV 35) and,
+    // with a cap, kappa_c (SDV 36); it leaves SDV 24-34, single precision's
+    // pairs, as they are.
+    setup.n_states = state_count_for(settings.cap);
+    setup.props = props_for(parameters, settings.scheme, settings.stol, 0, settings.cap);
     setup.stiffness_default = parameters.kn;
     const int points = scene.points();
     for (int first = 0; first < points; first += block_) {

@@ -17,6 +17,7 @@ namespace mortar::harness {
 struct RunSettings {
   Scheme scheme = Scheme::modified_euler;  // props(15)
   double stol = 0;                         // props(16); 0 keeps the routine's default
+  CompressionCap cap;                      // props(21..24); off by default
   int points = 1;   // run_protocol's joint test: identical points
   int block = 512;  // at most this many points per call, as Abaqus's nBlock
   MixedControlOptions mixed;

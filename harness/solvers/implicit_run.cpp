@@ -20,8 +20,9 @@ class ImplicitSolver : public MockSolver {
   // only when set.
   ImplicitSolver(const Parameters& parameters, const Scene& scene, const ImplicitSettings& settings,
                  std::function<void(const ResidualSequence&)> observe)
-      : solver_(UinterSetup{scene.directions(), kFlaggedStateCount,
-                            props_for(parameters, settings.scheme, settings.stol, settings.max_substeps)},
+      : solver_(UinterSetup{scene.directions(), state_count_for(settings.cap),
+                            props_for(parameters, settings.scheme, settings.stol, settings.max_substeps,
+                                      settings.cap)},
                 settings.options),
         observe_(std::move(observe)) {}
 

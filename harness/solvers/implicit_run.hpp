@@ -19,6 +19,7 @@ struct ImplicitSettings {
   Scheme scheme = Scheme::implicit;  // props(15); the explicit schemes return their continuum tangent
   double stol = 0;                   // props(16); 0 keeps the routine's default
   int max_substeps = 0;              // props(18) when > 0 (else not passed: the routine's default)
+  CompressionCap cap;                // props(21..24); off by default
   ImplicitOptions options;
 };
 

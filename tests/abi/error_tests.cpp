@@ -146,7 +146,8 @@ TEST_CASE("SDV 21 reads back: the law's names for its codes, the adapter's for i
   for (int code = 0; code <= int(mortar::Failure::local_solve_failed); ++code)
     CHECK(std::string(status_meaning(code)) == mortar::failure_name(static_cast<mortar::Failure>(code)));
   CHECK(std::string(status_meaning(kBadDirections)) == "nDir is not 2 or 3");
-  CHECK(std::string(status_meaning(kBadStateCount)) == "fewer than 23 state variables");
+  CHECK(std::string(status_meaning(kBadStateCount)) ==
+        "fewer than 23 state variables (with a compression cap: 36, single precision 37)");
   CHECK(std::string(status_meaning(kBadPropCount)) == "fewer than 14 properties");
   CHECK(std::string(status_meaning(kBadProperty)).find("a property breaks its rule") == 0);
   CHECK(std::string(status_meaning(kBadNodeStates)) == "nNodState < 1");

@@ -2,7 +2,8 @@
 // and the lanes (and the path counters, adapter/path_counters.hpp) gives, on
 // the random-path corpus, the outputs of the build without them, bit for bit
 // (their hashes: MJ_CORPUS_REFERENCE, written by path_corpus_reference); and
-// an elastic block actually goes through the lanes.
+// an elastic block actually goes through the lanes (a deck with a compression
+// cap never does).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -112,6 +113,23 @@ TEST_CASE("fast paths: an elastic block goes through the lanes", "[fast_paths]")
   // Far over the surface: plastic, the full path; then (SDV 19 > 0) again.
   const mj_adapter::PathCounts plastic = b.call(1e-3, 0.05);
   CHECK(plastic.full == 17);
+}
+
+TEST_CASE("fast paths: a deck with a compression cap takes no lanes, with fc = 0 it takes them as before",
+          "[fast_paths][cap]") {
+  const double fc = GENERATE(0.0, 30.0);
+  CAPTURE(fc);
+  Block b(17, 3, kSingle ? mortar::kCappedStateCountSingle : mortar::kCappedStateCountDouble);
+  // props(15..20) at their defaults, then a cap that keeps its rules on M15.
+  b.props.resize(mortar::kCapFirstProp, Real(0));
+  for (double v : {fc, 1.0, 5.0, 0.01}) b.props.push_back(Real(v));
+  b.call(0, 0);
+  for (int i = 0; i < 3; ++i) {
+    const mj_adapter::PathCounts c = b.call(-1e-5, 2e-5);
+    CHECK(c.lanes == (fc > 0 ? 0 : 16));
+    CHECK(c.total() == 17);
+    CHECK(b.state[mortar::slot::status] == Real(0));
+  }
 }
 
 TEST_CASE("fast paths: plain floats take the per-point shortcut, not the lanes", "[fast_paths]") {

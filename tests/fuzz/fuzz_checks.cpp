@@ -45,7 +45,9 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
   check_outputs_finite(b, when);
   const bool args_ok = (b.n_dir == 2 || b.n_dir == 3) && b.n_node_states >= 1 && b.n_states >= kSlots &&
                        b.n_props >= 14;
-  const bool valid = args_ok && props_valid(b.props, b.n_props);
+  // A deck with a cap needs DEPVAR 36 (double) or 37 (single).
+  const bool capped = args_ok && props_valid(b.props, b.n_props) && props_capped(b.props, b.n_props);
+  const bool valid = args_ok && props_valid(b.props, b.n_props) && (!capped || b.n_states >= kCappedSlots);
   const long per_point = long(count(b.n_states)) * long(count(b.n_node_states));
 
   if (!valid) {
@@ -82,10 +84,12 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     const Real* s1 = b.state.data() + k * per_point;
     // Nothing beyond the routine's slots of state(:, 1, k) is touched, but
     // for the integration flags (SDV 35, with nStates >= 35, either
-    // precision): a whole number of the four bits (docs/model.md 9).
+    // precision): a whole number of the four bits (docs/model.md 9); and
+    // with a cap kappa_c (SDV 36, 37), checked with the state below.
     const bool flagged = b.n_states >= mortar::kFlaggedStateCount;
     for (long i = slots; i < per_point; ++i) {
       if (flagged && i == mortar::flag_slot::integration_flags) continue;
+      if (capped && i >= mortar::cap_slot::kappa_c && i < kCappedSlots) continue;
       if (!same_bits(s0[i], s1[i])) fail("%s: point %d: state slot %ld (beyond SDV %d or node state 2) written", when.c_str(), k + 1, i + 1, slots);
     }
     if (flagged && !same_bits(s0[mortar::flag_slot::integration_flags], s1[mortar::flag_slot::integration_flags])) {
@@ -95,8 +99,9 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     const double pen = double(b.penetration[k]);
     if (pen <= -1e30) {  // no opposite surface: nothing happens, nothing carried
       ++stats.unpaired;
-      for (int i = 0; i < slots; ++i)
-        if (!same_bits(s0[i], s1[i])) fail("%s: unpaired point %d: state slot %d changed", when.c_str(), k + 1, i + 1);
+      for (int i = 0; i < (capped ? kCappedSlots : slots); ++i)
+        if ((i < slots || i >= mortar::cap_slot::kappa_c) && !same_bits(s0[i], s1[i]))
+          fail("%s: unpaired point %d: state slot %d changed", when.c_str(), k + 1, i + 1);
       for (int i = 0; i < b.n_dir; ++i)
         if (b.stress[k * b.n_dir + i] != Real(0)) fail("%s: unpaired point %d carries stress", when.c_str(), k + 1);
       continue;
@@ -107,7 +112,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
           std::strcmp(mortar::failure_name(static_cast<mortar::Failure>(int(status))), "unknown") != 0))
       fail("%s: point %d: SDV 21 = %g is not one of the law's failure codes", when.c_str(), k + 1, double(status));
     ++stats.status[int(status)];
-    const char* corrupt = state_violation(s0, paired, flagged);
+    const char* corrupt = state_violation(s0, paired, flagged, capped);
     if (corrupt) {
       ++stats.corrupt_reported;
       if (status == 0)
@@ -120,6 +125,10 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
         if (!same_bits(s0[i], s1[i]))
           fail("%s: point %d rejected (SDV 21 = %g) but state slot %d changed", when.c_str(), k + 1, double(status), i + 1);
       }
+      if (capped)
+        for (int i = mortar::cap_slot::kappa_c; i < kCappedSlots; ++i)
+          if (!same_bits(s0[i], s1[i]))
+            fail("%s: point %d rejected (SDV 21 = %g) but state slot %d changed", when.c_str(), k + 1, double(status), i + 1);
       if (b.spd[k] != Real(0)) fail("%s: rejected point %d has spd != 0", when.c_str(), k + 1);
       if (!corrupt) {
         // A plausible state: the only admissible reasons are a non-finite
@@ -144,7 +153,7 @@ void check_call(const Block& b, const Block& before, const std::string& text, in
     // Accepted: a state that obeys every rule, grown from the incoming one.
     for (int i = 0; i < slots; ++i)
       if (!finite(double(s1[i]))) fail("%s: point %d accepted but SDV %d = %g is not finite", when.c_str(), k + 1, i + 1, double(s1[i]));
-    if (const char* v = state_violation(s1, paired, flagged)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
+    if (const char* v = state_violation(s1, paired, flagged, capped)) fail("%s: point %d accepted but its new state breaks a rule: %s", when.c_str(), k + 1, v);
     if (s1[slot::initialised] != Real(1)) fail("%s: point %d accepted but not initialised", when.c_str(), k + 1);
     const Real ref = s0[slot::initialised] == Real(1) ? s0[slot::reference_penetration] : b.penetration[k];
     if (!same_bits(s1[slot::reference_penetration], ref)) fail("%s: point %d: reference penetration changed", when.c_str(), k + 1);

@@ -1,6 +1,7 @@
 // The fuzz target's independent oracles: what docs/model.md section 2, 7.4
-// and docs/abaqus.md say of props and states, read here without the law's
-// own checks.
+// and docs/abaqus.md say of props and states (the compression cap's
+// props(21..24) and SDV 36-37 included), read here without the law's own
+// checks.
 #include <algorithm>
 #include <cmath>
 
@@ -26,10 +27,25 @@ bool pair_belongs(Real high, Real low) {
 
 }  // namespace
 
+// props(21..24), the compression cap (docs/abaqus.md): finite; fc = 0 is no
+// cap; else each in its range, and the two rules against the joint's set.
+bool cap_valid(const std::vector<double>& p) {
+  const double ft0 = p[2], c0 = p[3], kn = p[0], ks = p[1];
+  const double fc = p[20], Cs = p[21], Gfc = p[22], kappa_p = p[23];
+  if (!(finite(fc) && finite(Cs) && finite(Gfc) && finite(kappa_p))) return false;
+  if (fc == 0) return true;
+  if (!(fc >= 1e-3 && fc <= 1000 && Cs >= 0 && Cs <= 1000 && Gfc >= 1e-6 && Gfc <= 1e4 && kappa_p >= 0 &&
+        kappa_p <= 100))
+    return false;
+  if (!(fc / 7 > std::sqrt(ft0 * ft0 + Cs * c0 * c0))) return false;
+  const double stiff = Cs > 0 ? std::min(kn, Cs * ks) : kn;
+  return std::pow(fc * 6 / 7, 2) / Gfc < stiff;
+}
+
 bool props_valid(const std::vector<Real>& props, int n_props) {
   if (n_props < 14) return false;
-  const int n = std::min(n_props, 20);
-  std::vector<double> p(20, 0.0);
+  const int n = std::min(n_props, 24);
+  std::vector<double> p(24, 0.0);
   for (int i = 0; i < n; ++i) {
     p[i] = double(props[i]);
     if (!finite(p[i])) return false;
@@ -52,7 +68,16 @@ bool props_valid(const std::vector<Real>& props, int n_props) {
   if (!(max_sub == 0 || (max_sub == std::floor(max_sub) && max_sub >= 1 && max_sub <= 1e9))) return false;
   if (!(min_sub == 0 || (min_sub > 0 && min_sub <= 1))) return false;
   if (!(sign == 0 || sign == 1 || sign == -1)) return false;
-  return true;
+  return cap_valid(p);
+}
+
+bool props_capped(const std::vector<Real>& props, int n_props) {
+  return n_props > mortar::kCapFirstProp && double(props[mortar::kCapFirstProp]) > 0;
+}
+
+double kappa_c_value(const Real* s, bool paired) {
+  const double high = double(s[mortar::cap_slot::kappa_c]);
+  return paired ? high + double(s[mortar::cap_slot::kappa_c_low]) : high;
 }
 
 // The slots the routine owns per point: SDV 1-23, and SDV 24-34 for single
@@ -73,7 +98,7 @@ double value(const Real* s, int i, bool paired) {
 
 // The documented rules of an incoming state (docs/model.md section 3, the
 // law's check_state, and the adapter's flags; SDV 35 where `flagged`).
-const char* state_violation(const Real* s, bool paired, bool flagged) {
+const char* state_violation(const Real* s, bool paired, bool flagged, bool capped) {
   if (paired)
     for (const mortar::SlotPair& p : mortar::kPairedSlots)
       if (!pair_belongs(s[p.high], s[p.low])) return "a low part (SDV 24-34) beyond its high part's float spacing";
@@ -91,6 +116,12 @@ const char* state_violation(const Real* s, bool paired, bool flagged) {
   if (flagged) {
     const double f = double(s[mortar::flag_slot::integration_flags]);
     if (!(f >= 0 && f <= 15 && f == std::floor(f))) return "SDV 35 not a whole number from 0 to 15";
+  }
+  if (capped) {
+    if (paired && !pair_belongs(s[mortar::cap_slot::kappa_c], s[mortar::cap_slot::kappa_c_low]))
+      return "SDV 37 beyond SDV 36's float spacing";
+    const double kappa = kappa_c_value(s, paired);
+    if (!(finite(kappa) && kappa >= 0)) return "kappa_c (SDV 36) not finite or negative";
   }
   if (s[slot::initialised] == 1 && !finite(double(s[slot::reference_penetration]))) return "non-finite reference";
   return nullptr;

@@ -62,9 +62,16 @@ void decode_props(Reader& r, Block& b);
 
 // The independent oracles (fuzz_oracles.cpp).
 bool props_valid(const std::vector<Real>& props, int n_props);
+// Whether valid props switch the compression cap on (props(21) = fc > 0), and
+// the state count such a call needs in this precision (36 double, 37 single).
+bool props_capped(const std::vector<Real>& props, int n_props);
+constexpr int kCappedSlots = sizeof(Real) == 4 ? mortar::kCappedStateCountSingle : mortar::kCappedStateCountDouble;
 int owned_slots(int n_states);
 double value(const Real* s, int i, bool paired);
-const char* state_violation(const Real* s, bool paired, bool flagged);
+// kappa_c (SDV 36, with SDV 37 its low part where `paired`) as the routine
+// reads it, where `capped`.
+double kappa_c_value(const Real* s, bool paired);
+const char* state_violation(const Real* s, bool paired, bool flagged, bool capped = false);
 
 // The checks after one call (fuzz_checks.cpp).
 void check_call(const Block& b, const Block& before, const std::string& text, int call);

@@ -1,7 +1,8 @@
 // The checks every entry point makes before the law runs: the array sizes its
-// caller declared (nDir, nNodState, the state count, nProps) and props(1..20) read
-// into the law's model and the adapter's shear sign (docs/abaqus.md, "props";
-// docs/model.md 2 for the law's rules, enforced by mortar::read_props).
+// caller declared (nDir, nNodState, the state count, nProps) and props(1..24) read
+// into the law's model (its compression cap from props(21..24)) and the
+// adapter's shear sign (docs/abaqus.md, "props"; docs/model.md 2 and 12 for
+// the law's rules, enforced by mortar::read_props and mortar::read_cap).
 #pragma once
 
 #include <algorithm>
@@ -15,11 +16,12 @@
 namespace mj_adapter {
 
 // props(15..19) are the law's integration controls (mortar::read_props);
-// props(20) is the adapter's shear sign; anything after it is ignored.
+// props(20) is the adapter's shear sign; props(21..24) the law's compression
+// cap (mortar::read_cap); anything after them is ignored.
 constexpr int kLawPropCount = mortar::kPropsWithControls;  // 19
 constexpr int kSchemeIndex = 14;                           // 0-based: props(15)
 constexpr int kShearSignIndex = 19;                        // 0-based: props(20)
-constexpr int kReadPropCount = 20;
+constexpr int kReadPropCount = mortar::kCapFirstProp + mortar::kCapCount;  // 24
 
 // Penetrations at or below this mean "no opposite surface found" (the manual
 // gives -1e36 for unpaired points in UINTER; VUINTER is assumed to do the same).
@@ -54,6 +56,21 @@ inline ArgumentError check_counts(const Counts& n, const ArgumentNames& names) {
   return {};
 }
 
+// A deck with a cap keeps kappa_c in SDV 36 (and its low part in SDV 37 in
+// single precision): its state count, checked once props are read.
+inline ArgumentError check_cap_state_count(const Counts& n, bool cap, bool single, const ArgumentNames& names) {
+  if (!cap) return {};
+  if (single && n.n_states < mortar::kCappedStateCountSingle)
+    return {kBadStateCount, names.n_states, n.n_states,
+            "at least 37 state variables with the compression cap (props(21) = fc > 0): DEPVAR=37 on *SURFACE "
+            "INTERACTION (SDV 36-37 hold kappa_c as a float pair in single precision)"};
+  if (!single && n.n_states < mortar::kCappedStateCountDouble)
+    return {kBadStateCount, names.n_states, n.n_states,
+            "at least 36 state variables with the compression cap (props(21) = fc > 0): DEPVAR=36 on *SURFACE "
+            "INTERACTION in double precision (SDV 36 holds kappa_c; 37 in single precision)"};
+  return {};
+}
+
 // The law's model and the adapter's own control, read from props.
 struct Setup {
   mortar::Model model;
@@ -67,7 +84,7 @@ struct Defaults {
   const char* shear_sign_rule;
 };
 
-// props(1..min(n_props, 20)), in the routine's precision, into `setup`.
+// props(1..min(n_props, 24)), in the routine's precision, into `setup`.
 template <class Real>
 mortar::ValidationError read_setup(const Real* props, int n_props, const Defaults& defaults, Setup& setup) {
   double p[kReadPropCount] = {};
@@ -80,8 +97,11 @@ mortar::ValidationError read_setup(const Real* props, int n_props, const Default
   if (n <= kSchemeIndex || p[kSchemeIndex] == 0) controls.scheme = defaults.scheme;
   const double sign = n > kShearSignIndex ? p[kShearSignIndex] : 0.0;
   if (sign != 0 && sign != 1 && sign != -1) return {kShearSignIndex, "shear_sign", sign, defaults.shear_sign_rule};
+  mortar::CompressionCap cap;
+  e = mortar::read_cap(p, n, parameters, cap);
+  if (!e.ok()) return e;
   setup.shear_sign = sign == 0 ? defaults.shear_sign : sign;
-  setup.model = mortar::make_model(parameters, controls);
+  setup.model = mortar::make_model(parameters, controls, cap);
   return {};
 }
 
@@ -90,7 +110,7 @@ mortar::ValidationError read_setup(const Real* props, int n_props, const Default
 // increment, and reading it anew (Table 1's rules, make_model's tangents)
 // costs as much as a good share of a block's elastic updates
 // (docs/decisions.md). Only props that passed are kept, so a bad array
-// is read and reported at every call; the key is their bits (props(1..20))
+// is read and reported at every call; the key is their bits (props(1..24))
 // and the defaults, on which the setup alone depends. Per thread: Abaqus/
 // Explicit's threads call the routine at once.
 template <class Real>

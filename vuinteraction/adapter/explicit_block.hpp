@@ -124,7 +124,7 @@ struct ExplicitBlock {
 
   // Integrates every point; reports the failed ones. False when any failed.
   bool integrate(const Caller& who, const Setup& setup) const {
-    const StateStorage<Real> storage = StateStorage<Real>::of(counts.n_states);
+    const StateStorage<Real> storage = StateStorage<Real>::of(counts.n_states, setup.model.cap.on());
     if (storage.plain_float()) warn_plain_float(who, counts.n_states);
     int failures = 0;
     auto integrate_one = [&](int k) {
@@ -134,9 +134,11 @@ struct ExplicitBlock {
     int k = 0;
 #if MJ_ELASTIC_LANES
     // The points in pairs through the elastic lanes first; a point they do
-    // not take goes the way of every other, in the same order.
+    // not take goes the way of every other, in the same order. The lanes
+    // prove "inside" against the shear-tension surface alone: a deck with a
+    // cap sends every point through integrate_point.
     using mortar::lanes::kWidth;
-    if (!storage.plain_float())
+    if (!storage.plain_float() && !storage.cap)
       for (; k + kWidth <= n_points; k += kWidth) {
         // Points whose last increment was plastic (SDV 19 > 0) go the full
         // path at once (integrate_point): a pair of them is not loaded into

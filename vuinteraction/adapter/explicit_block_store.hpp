@@ -60,6 +60,7 @@ inline int ExplicitBlock<Real>::store_full(const Setup& setup, const StateStorag
   if constexpr (StateStorage<Real>::kSingle) {
     // The count a constant in each branch, so that the copies and the finite
     // test are vector code rather than calls of memcpy and loops.
+    if (storage.cap) return store_float_over<mortar::kCappedStateCountSingle>(setup, storage, k, st, s, r, first);
     if (storage.flags) return store_float_over<mortar::kFlaggedStateCount>(setup, storage, k, st, s, r, first);
     if (storage.pairs) return store_float_over<mortar::kPairedStateCount>(setup, storage, k, st, s, r, first);
     return store_float_over<mortar::kStateCount>(setup, storage, k, st, s, r, first);

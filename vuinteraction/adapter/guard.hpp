@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdio>
+#include <type_traits>
 
 #include "adapter/arguments.hpp"
 #include "adapter/report.hpp"
@@ -41,7 +42,8 @@ struct Routine {
 #define MJ_ENTRY_INLINE inline
 #endif
 
-// One call of one routine, as the skeleton sees it. `Call` provides
+// One call of one routine, as the skeleton sees it (a deck with a cap: its
+// state count once props are read, check_cap_state_count). `Call` provides
 //   Counts counts;  const Real* props;
 //   void reject(int code)          finite outputs, `code` in SDV 21 as far as
 //                                  the declared arrays reach;
@@ -71,6 +73,15 @@ MJ_ENTRY_INLINE void run_call(const Routine& routine, const char* surf_int, int 
     if (!setup) {
       report_property(who, e);
       call.reject(kBadProperty);
+      stop_analysis(exit_utility);
+      return;
+    }
+    using Real = std::remove_const_t<std::remove_pointer_t<decltype(call.props)>>;
+    const ArgumentError c = check_cap_state_count(call.counts, setup->model.cap.on(),
+                                                  std::is_same_v<Real, float>, routine.arguments);
+    if (c.code != 0) {
+      report_argument(who, c);
+      call.reject(c.code);
       stop_analysis(exit_utility);
       return;
     }

@@ -112,6 +112,7 @@ struct StandardPoint {
   void integrate_perturbation(const Setup& setup) const {
     mortar::State base;
     mortar::load_state(statev, base);
+    if (setup.model.cap.on()) base.kappa_c = mortar::load_kappa_c(statev);
     mortar::Mat3 T;
     const mortar::IncrementResult r = mortar::integrate_increment(setup.model, base, mortar::Vec3::Zero(), &T);
     mortar::Vec3 d_rdisp = mortar::Vec3::Zero();
@@ -127,7 +128,10 @@ struct StandardPoint {
     double* st = statev;
     // SDV 35, the integration flags, with NSTATV >= 35 (docs/abaqus.md).
     const bool flags = counts.n_states >= mortar::kFlaggedStateCount;
-    if (!mortar::adapter_slots_valid(st, flags)) {  // as the law's own rejections
+    // SDV 36, kappa_c, with a cap (run_call checked NSTATV >= 36).
+    const bool cap = setup.model.cap.on();
+    if (!mortar::adapter_slots_valid(st, flags) ||
+        (cap && !mortar::kappa_c_valid(mortar::load_kappa_c(st)))) {  // as the law's own rejections
       reject(static_cast<int>(mortar::Failure::invalid_state));
       *pnewdt = std::min(*pnewdt, kCutBack);
       report_rejected(who, mortar::Failure::invalid_state);
@@ -136,6 +140,7 @@ struct StandardPoint {
     mortar::State s;
     mortar::load_state(st, s);
     if (flags) s.integration_flags = mortar::load_integration_flags(st);
+    if (cap) s.kappa_c = mortar::load_kappa_c(st);
     if (counts.n_dir == 3) rotate_tangential_state(drot, s);
     const bool first = st[slot::initialised] == 0.0;
     // The reference is the start-of-increment position, the same in every
@@ -148,6 +153,7 @@ struct StandardPoint {
     const mortar::IncrementResult r = mortar::integrate_increment(setup.model, s, d, &T);
     mortar::store_state(s, st);
     if (flags) mortar::store_integration_flags(s.integration_flags, st);
+    if (cap) mortar::store_kappa_c(s.kappa_c, st);
     write_stress(setup, r.traction, T);
     *sed = r.elastic_energy;
     *spd = r.d_inelastic();

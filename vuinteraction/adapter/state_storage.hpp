@@ -2,6 +2,9 @@
 // the solver's array of their precision (docs/model.md 3).
 //
 //   double   the 23 slots of mortar::slot; slots beyond them are not touched.
+//   cap      a deck with a compression cap also keeps kappa_c in SDV 36 (37:
+//            its float pair's low part in single precision); without a cap
+//            SDV 36-37 are never read or written.
 // The rest: docs/adapters.md, section 7.
 #pragma once
 
@@ -23,13 +26,22 @@ struct StateStorage {
 
   bool pairs = false;               // float pairs in SDV 24-34
   bool flags = false;               // integration flags in SDV 35
+  bool cap = false;                 // kappa_c in SDV 36 (and 37)
   int count = mortar::kStateCount;  // slots read and written per point
 
-  static StateStorage of(int n_states) {
+  // The DEPVAR a deck with a cap needs in this precision (run_call checks it,
+  // so that a capped storage always has the pairs and the flags too).
+  static constexpr int kCappedCount = kSingle ? mortar::kCappedStateCountSingle : mortar::kCappedStateCountDouble;
+
+  static StateStorage of(int n_states, bool capped = false) {
     StateStorage s;
     s.pairs = kSingle && n_states >= mortar::kPairedStateCount;
     s.flags = n_states >= mortar::kFlaggedStateCount;
-    s.count = s.flags ? mortar::kFlaggedStateCount : s.pairs ? mortar::kPairedStateCount : mortar::kStateCount;
+    s.cap = capped && n_states >= kCappedCount;
+    s.count = s.cap     ? kCappedCount
+              : s.flags ? mortar::kFlaggedStateCount
+              : s.pairs ? mortar::kPairedStateCount
+                        : mortar::kStateCount;
     return s;
   }
 
@@ -37,7 +49,17 @@ struct StateStorage {
   bool plain_float() const { return kSingle && !pairs; }
 
   // The adapter's own slots obey their rules (mortar::adapter_slots_valid).
-  bool slots_valid(const Real* st) const { return mortar::adapter_slots_valid(st, flags); }
+  // With a cap, kappa_c too (mortar::kappa_c_valid; in single precision its
+  // pair consistent as well).
+  bool slots_valid(const Real* st) const {
+    if (!mortar::adapter_slots_valid(st, flags)) return false;
+    if (!cap) return true;
+    if constexpr (kSingle) {
+      return mortar::kappa_c_pair_valid(st);
+    } else {
+      return mortar::kappa_c_valid(mortar::load_kappa_c(st));
+    }
+  }
 
   // Every low part belongs to its high part (mortar::pair_consistent).
   // `well_formed` (SDV 1-18 finite and every pair canonical) implies it: a
@@ -50,17 +72,22 @@ struct StateStorage {
     return true;
   }
 
-  // SDV 1-23 (the pairs' values where kept, the integration flags where
-  // kept) into s; whether every float pair is canonical (mortar::
-  // pair_canonical: store() would write it unchanged), always true without
-  // pairs.
+  // SDV 1-23 (the pairs' values where kept, the integration flags and
+  // kappa_c where kept) into s; whether every float pair is canonical
+  // (mortar::pair_canonical: store() would write it unchanged), always true
+  // without pairs.
   bool load(const Real* st, mortar::State& s) const {
     if (flags) s.integration_flags = mortar::load_integration_flags(st);
     mortar::load_state(st, s);
     if constexpr (kSingle) {
-      if (pairs) return mortar::canonical_pairs_into(st, s);
+      if (!pairs) return true;
+      bool cap_canonical = true;
+      if (cap) s.kappa_c = mortar::load_kappa_c_pair(st, cap_canonical);
+      return mortar::canonical_pairs_into(st, s) & cap_canonical;
+    } else {
+      if (cap) s.kappa_c = mortar::load_kappa_c(st);
+      return true;
     }
-    return true;
   }
 
   // The elastic lanes' load (ExplicitBlock::elastic_lanes): the paired
@@ -110,22 +137,35 @@ struct StateStorage {
   }
 
   void store(const mortar::State& s, Real* st) const {
+    if (cap) store_kappa_c(s, st);
     if (flags) mortar::store_integration_flags(s.integration_flags, st);
     store_without_flags(s, st);
   }
   // store() into an array of kCount values (single precision's staging copy,
-  // ExplicitBlock::store_float_over): the flags' slot only where the array
-  // holds it, which the dispatch on `flags` already ensures at run time.
+  // ExplicitBlock::store_float_over): the flags' and kappa_c's slots only
+  // where the array holds them, which the dispatch on `flags` and `cap`
+  // already ensures at run time.
   template <int kCount>
   void store_into(const mortar::State& s, Real (&a)[kCount]) const {
-    if constexpr (kCount > mortar::flag_slot::integration_flags) {
+    if constexpr (kCount >= kCappedCount) {
       store(s, a);
+    } else if constexpr (kCount > mortar::flag_slot::integration_flags) {
+      if (flags) mortar::store_integration_flags(s.integration_flags, a);
+      store_without_flags(s, a);
     } else {
       store_without_flags(s, a);
     }
   }
 
  private:
+  static void store_kappa_c(const mortar::State& s, Real* st) {
+    if constexpr (kSingle) {
+      mortar::store_kappa_c_pair(s.kappa_c, st);
+    } else {
+      mortar::store_kappa_c(s.kappa_c, st);
+    }
+  }
+
   void store_without_flags(const mortar::State& s, Real* st) const {
     if constexpr (kSingle) {
       if (pairs) return mortar::store_state_pairs(s, st);

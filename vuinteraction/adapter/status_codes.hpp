@@ -11,7 +11,7 @@ namespace mj_adapter {
 
 enum AdapterCode : int {
   kBadDirections = -1,  // nDir not 2 or 3
-  kBadStateCount = -2,  // nStates / nStateVar / NSTATV below the layout's 23
+  kBadStateCount = -2,  // nStates / nStateVar / NSTATV below the layout's 23 (a cap: 36, single 37)
   kBadPropCount = -3,   // nProps below 14
   kBadProperty = -4,    // a property or control breaks its rule
   kBadNodeStates = -5,  // nNodState < 1
@@ -25,7 +25,7 @@ inline const char* status_meaning(int status) {
   if (status >= 0) return mortar::failure_name(static_cast<mortar::Failure>(status));
   switch (status) {
     case kBadDirections: return "nDir is not 2 or 3";
-    case kBadStateCount: return "fewer than 23 state variables";
+    case kBadStateCount: return "fewer than 23 state variables (with a compression cap: 36, single precision 37)";
     case kBadPropCount: return "fewer than 14 properties";
     case kBadProperty: return "a property breaks its rule (the routine's message on stderr names it)";
     case kBadNodeStates: return "nNodState < 1";

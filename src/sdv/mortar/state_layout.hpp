@@ -184,6 +184,15 @@ bool adapter_slots_valid(const Real* a, bool flags) {
          (!flags || integration_flags_valid(double(a[flag_slot::integration_flags])));
 }
 
+// SDV 36 in double precision (single precision keeps a float pair in SDV
+// 36-37, state_pairs.hpp): the cap's kappa_c, read and written only by a
+// deck with a cap. Its rule: finite and >= 0 (a plastic closure); anything
+// else is not a value the routine wrote (a corrupted restart or initial
+// condition) and the point is rejected as an invalid state, as SDV 35 is.
+inline bool kappa_c_valid(double x) { return (x >= 0.0) & (x <= 1.7976931348623157e308); }
+inline double load_kappa_c(const double* a) { return a[cap_slot::kappa_c]; }
+inline void store_kappa_c(double kappa_c, double* a) { a[cap_slot::kappa_c] = kappa_c; }
+
 // Short names of the state variables in slot order (for CSV headers, docs).
 extern const char* const kStateNames[kStateCount];
 // The same for the low parts, SDV 24-34 ("dp_n_lo", ...).

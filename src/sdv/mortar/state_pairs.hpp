@@ -229,4 +229,22 @@ inline void load_state_pairs(const float* a, State& s) {
 }
 void store_state_pairs(const State& s, float* a);
 
+// The cap's kappa_c as a float pair (high part SDV 36, low part SDV 37),
+// kept only by a deck with a cap: its value and whether the pair is
+// canonical; the pair's rule (consistent, its value >= 0: kappa_c_valid);
+// and the store, split as every other pair.
+inline double load_kappa_c_pair(const float* a, bool& canonical) {
+  const float high = a[cap_slot::kappa_c], low = a[cap_slot::kappa_c_low];
+  const double value = pair_value(high, low);
+  canonical = pair_canonical(high, low, value);
+  return value;
+}
+inline bool kappa_c_pair_valid(const float* a) {
+  const float high = a[cap_slot::kappa_c], low = a[cap_slot::kappa_c_low];
+  return pair_consistent(high, low) && kappa_c_valid(pair_value(high, low));
+}
+inline void store_kappa_c_pair(double kappa_c, float* a) {
+  split_into_pair(kappa_c, a[cap_slot::kappa_c], a[cap_slot::kappa_c_low]);
+}
+
 }  // namespace mortar

@@ -49,3 +49,20 @@ TEST_CASE("SDV 21: the law's codes by their names, the adapters' by their rule",
   CHECK(status_meaning(-4).find("property") != std::string::npos);
   CHECK(status_meaning(-99) == "the routine's internal error");
 }
+
+TEST_CASE("props: a compression cap reaches the routine as props(21..24), with the state count that keeps it",
+          "[abi][cap]") {
+  const CompressionCap cap{10, 1, 2, 0.02};
+  const std::vector<double> props = props_for(kVdp, Scheme::modified_euler, 0, 0, cap);
+  REQUIRE(props.size() == 24);
+  CHECK(props[19] == 0);  // the shear sign at its default
+  const ReadBack r = read_back(props);
+  REQUIRE(r.ok);
+  CompressionCap back;
+  REQUIRE(read_cap(props.data(), static_cast<int>(props.size()), r.p, back).ok());
+  for (int i = 0; i < kCapCount; ++i) CHECK(cap_parameter_at(back, i) == cap_parameter_at(cap, i));
+  CHECK(state_count_for(cap) == kCappedStateCountDouble);
+  // Without a cap: props(1..19) and DEPVAR 35, as before.
+  CHECK(props_for(kVdp, Scheme::modified_euler, 0).size() == 19);
+  CHECK(state_count_for(CompressionCap{}) == kFlaggedStateCount);
+}

@@ -21,6 +21,7 @@
 #include "output/two_block_deck.hpp"
 #include "output/wall_deck.hpp"
 #include "solvers/block_solver.hpp"
+#include "support.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
@@ -319,4 +320,23 @@ TEST_CASE("The shipped two-block decks are what inp --two-blocks writes today", 
                          standard ? DeckSolver::standard_contact_pair : DeckSolver::explicit_general_contact);
     CHECK(shipped.str() == fresh.str());
   }
+}
+
+TEST_CASE("inp --scene: a joint file with a compression cap gives props(21..24) and DEPVAR 37", "[inputs][decks][cap]") {
+  // Arrange: the one-block scene with the capped van der Pluijm joint.
+  const auto dir = testing::fresh_directory("scene_cap");
+  std::filesystem::copy_file(kData + "/vdp_sn0.5_cap.toml", dir / "vdp_sn0.5_cap.toml");
+  std::ifstream in(kData + "/wall_one_block.toml");
+  std::string scene((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string plain = "joint = \"vdp_sn0.5.toml\"";
+  REQUIRE(scene.find(plain) != std::string::npos);
+  scene.replace(scene.find(plain), plain.size(), "joint = \"vdp_sn0.5_cap.toml\"");
+  // Act
+  const SceneSpec s = read_scene_file(testing::write_file(dir / "scene.toml", scene));
+  const std::string text = wall_deck_text(s);
+  // Assert
+  REQUIRE(s.joint.cap.on());
+  CHECK(s.joint.cap.fc == 10);
+  CHECK_THAT(text, Catch::Contains("PROPERTIES=24, DEPVAR=37\n"));
+  CHECK_THAT(text, Catch::Contains("fc Cs Gfc kappa_p\n0., 0., 0., 0., 10., 1., 2., 0.02\n"));
 }

@@ -35,3 +35,30 @@ TEST_CASE("Numbers in the input deck read back exactly", "[inputs]") {
     CHECK(std::strtod(s.c_str(), nullptr) == x);
   }
 }
+
+TEST_CASE("A deck with a compression cap carries props(21..24) and DEPVAR 37 (UINTER: 36)", "[inputs][cap]") {
+  // Arrange: van der Pluijm's set with a cap that keeps its rules.
+  const mortar::Parameters p = {209.9, 87.4, 0.62, 0.88, 0.00458, 0.058, 40.97, 36.87, 1217.7, 27.7, 0, 1828.3, 10, 3};
+  const mortar::CompressionCap cap = {10, 1, 2, 0.02};
+  REQUIRE(mortar::validate(cap, p).ok());
+  // Act
+  InpOptions o;
+  o.props = deck_props(p, false, false, mortar::Scheme::modified_euler, 0, cap);
+  o.depvar = deck_depvar(o.props, false);
+  std::ostringstream out;
+  write_surface_interaction(out, o);
+  // Assert
+  const std::string text = out.str();
+  CHECK_THAT(text, Catch::Contains("PROPERTIES=24, DEPVAR=37\n"));
+  CHECK_THAT(text, Catch::Contains("** props(17..24): FTOL max substeps min substep shear sign fc Cs Gfc kappa_p\n"
+                                   "0., 0., 0., 0., 10., 1., 2., 0.02\n"));
+  CHECK(deck_depvar(o.props, true) == 36);
+  // Without a cap (or fc = 0): today's props and DEPVAR.
+  const std::vector<double> plain = deck_props(p, false, false, mortar::Scheme::modified_euler, 0);
+  CHECK(plain.size() == 14);
+  CHECK(deck_depvar(plain, false) == 35);
+  CHECK(deck_depvar(plain, true) == 23);
+  std::vector<double> off = o.props;
+  off[20] = 0;
+  CHECK(deck_depvar(off, false) == 35);
+}
