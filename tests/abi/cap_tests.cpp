@@ -31,8 +31,8 @@ constexpr bool kSingle = sizeof(Real) == sizeof(float);
 constexpr int kCapped = kSingle ? mortar::kCappedStateCountSingle : mortar::kCappedStateCountDouble;
 constexpr Real kSentinel = Real(-7.5);
 
-// A cap that keeps its rules on Almeida M15: fc/7 = 4.29 > sqrt(ft0^2 +
-// Cs c0^2) = 3.21; (6 fc/7)^2 / Gfc = 132 < min(kn, Cs ks) = 308.8.
+// A cap that keeps its rules on Almeida M15: fc/3 = 10 > sqrt(ft0^2 +
+// Cs c0^2) = 3.21; 481 fc^2 / (588 Gfc) = 147 < min(kn, Cs ks) = 308.8.
 mortar::CompressionCap m15_cap() { return {30.0, 1.0, 5.0, 0.01}; }
 
 // Almeida M15 as props(1..20) (controls and shear sign at their defaults)
@@ -70,7 +70,7 @@ TEST_CASE("Cap: a bad props(21..24) is reported with its name, value and rule", 
       {0, -1.0, {"'fc' (props(21)) = -1", "fc = 0 (no cap) or 1e-3 <= fc <= 1000 MPa"}},
       {1, nan, {"'Cs' (props(22)) = nan", "must be a finite number"}},
       {2, 0.0, {"'Gfc' (props(23)) = 0", "1e-6 <= Gfc <= 1e4 N/mm"}},
-      {0, 10.0, {"'fc' (props(21)) = 10", "fc/7 > sqrt(ft0^2 + Cs c0^2)"}},
+      {0, 9.0, {"'fc' (props(21)) = 9", "fc/3 > sqrt(ft0^2 + Cs c0^2)"}},
       {3, -0.5, {"'kappa_p' (props(24)) = -0.5", "0 <= kappa_p <= 100 mm"}},
   };
   for (const Case& c : cases) {

@@ -37,9 +37,9 @@ bool cap_valid(const std::vector<double>& p) {
   if (!(fc >= 1e-3 && fc <= 1000 && Cs >= 0 && Cs <= 1000 && Gfc >= 1e-6 && Gfc <= 1e4 && kappa_p >= 0 &&
         kappa_p <= 100))
     return false;
-  if (!(fc / 7 > std::sqrt(ft0 * ft0 + Cs * c0 * c0))) return false;
+  if (!(fc / 3 > std::sqrt(ft0 * ft0 + Cs * c0 * c0))) return false;
   const double stiff = Cs > 0 ? std::min(kn, Cs * ks) : kn;
-  return std::pow(fc * 6 / 7, 2) / Gfc < stiff;
+  return 481 * fc * fc / (588 * Gfc) < stiff;
 }
 
 bool props_valid(const std::vector<Real>& props, int n_props) {

@@ -86,9 +86,9 @@ struct Measured {
   // per increment, against the same reference (measured on request).
   double implicit = -1;
   long implicit_failures = 0, implicit_work = 0;
-  // Increments left out of the errors, over every run compared: one run
-  // dropped at fixed separation there and the reference did not, or the
-  // other way round (worst, splitting_paths.hpp).
+  // Increments, over every run compared, in which one run dropped at fixed
+  // separation and the reference did not, or the other way round (worst,
+  // splitting_paths.hpp: compared with the reference either side too).
   long drops_apart = 0;
   bool any_failure() const { return reference_failures + tight_failures + default_failures > 0; }
 };

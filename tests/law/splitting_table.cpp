@@ -10,9 +10,10 @@
 // "fail n" counts calls that failed (the row is then not comparable). The
 // substeps columns give the most substeps one call took (accepted, rejected
 // and relaxation steps), over the tight runs (reference included) and over
-// the default run. "drops apart" counts the increments left out of the
-// errors because one run dropped at fixed separation there and the
-// reference did not, or the other way round (worst, splitting_paths.hpp).
+// the default run. "drops apart" counts the increments in which one run
+// dropped at fixed separation and the reference did not, or the other way
+// round; there the reference one increment either side counts too (worst,
+// splitting_paths.hpp).
 //
 // Usage: splitting_table [--h 1e-3,1e-4,1e-5] [--family NAME] [--set NAME]
 //                        [--all-sets] [--implicit]

@@ -84,7 +84,7 @@ TEST_CASE("A cap value that breaks its rule is an error naming the key, its line
     std::string lines, message;
   };
   const Case cases[] = {
-      {"fc = 5\nCs = 1\nGfc = 2\n", "p.toml:15: parameter 'fc' = 5 violates the rule: fc/7 > sqrt(ft0^2 + Cs c0^2)"},
+      {"fc = 3\nCs = 1\nGfc = 2\n", "p.toml:15: parameter 'fc' = 3 violates the rule: fc/3 > sqrt(ft0^2 + Cs c0^2)"},
       {"fc = -1\n", "p.toml:15: parameter 'fc' = -1 violates the rule: fc = 0 (no cap) or 1e-3 <= fc <= 1000 MPa"},
       {"fc = 10\nCs = 1\nGfc = 0\n", "p.toml:17: parameter 'Gfc' = 0 violates the rule: 1e-6 <= Gfc <= 1e4 N/mm"},
       {"fc = 10\nCs = nan\nGfc = 2\n", "p.toml:16: parameter 'Cs' must be a finite number"},
