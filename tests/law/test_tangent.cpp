@@ -215,3 +215,58 @@ TEST_CASE("Explicit: the continuum tangent after closing an open joint unloads t
     }
   }
 }
+
+TEST_CASE("Implicit: the consistent tangent through the cap and the corner matches central differences",
+          "[implicit][tangent][cap]") {
+  // van der Pluijm's set (sigma_n = -0.5 MPa) with a cap of fc = 12 MPa, Cs =
+  // 9, Gfc = 5 N/mm, kappa_p = 0.05 mm (docs/model.md 12): the cap's step
+  // (its Newton on sigma, lc) and the corner's (sigma, w, l1, lc)
+  // differentiated at their solutions, the intersection on the cap. GIIC
+  // ten times Table 1's: with 0.058 N/mm, sliding at fixed opening from
+  // sigma_n = -1.7 MPa or below, Eq. 2 alone snaps back on reaching it (with
+  // or without a cap), the point drops at fixed separation and the tangent
+  // is flagged approximate.
+  Controls ctl;
+  ctl.scheme = Scheme::implicit;
+  Parameters p = van_der_pluijm(-0.5);
+  p.GIIC = 0.58;
+  const Model M = make_model_checked(p, ctl, CompressionCap{12.0, 9.0, 5.0, 0.05});
+  State pressed;  // sigma_n = -2.5 MPa: inside the initial cap, fc/3 = 4
+  integrate_increment(M, pressed, Vec3(-2.5 / M.p.kn, 0, 0));
+  State crushed = pressed;  // past the peak
+  while (crushed.kappa_c < 0.06) integrate_increment(M, crushed, Vec3(-0.005, 0, 0));
+  State sliding = pressed;  // on the cap, the hyperbola not yet met
+  for (int i = 0; i < 15; ++i) integrate_increment(M, sliding, Vec3(0, 1e-3, 0));
+  REQUIRE(sliding.kappa_c > 0);
+  REQUIRE(sliding.wII == 0);
+  State corner = sliding;  // the first increment on which Eq. 2 flows too
+  State before = corner;
+  while (corner.wII == 0) {
+    before = corner;
+    integrate_increment(M, corner, Vec3(0, 1e-4, 0));
+  }
+  struct Case {
+    const char* name;
+    State start;
+    Vec3 d;
+    bool crushes, slides;  // kappa_c grows; Eq. 2 flows (wII grows)
+  };
+  const std::vector<Case> cases = {
+      {"elastic to the cap in one increment, crushing", pressed, Vec3(-8e-3, 0, 0), true, false},
+      {"crushing past the peak", crushed, Vec3(-2e-3, 0, 0), true, false},
+      {"sliding along the cap", sliding, Vec3(-1e-5, 1e-3, 2e-4), true, false},
+      {"onto the corner", before, Vec3(0, 2e-4, 0), true, true},
+  };
+  for (const Case& c : cases) {
+    const TangentCheck t = check_tangent(M, c.start, c.d);
+    State end = c.start;
+    integrate_increment(M, end, c.d);
+    CAPTURE(c.name, t.tangent, t.fd, t.result.status.substeps_accepted, t.result.status.relaxations, t.result.status.fallback_pieces, t.result.status.regime_switches, t.error, end.kappa_c - c.start.kappa_c,
+            end.wII - c.start.wII);
+    REQUIRE(t.result.status.ok());
+    CHECK((end.kappa_c > c.start.kappa_c) == c.crushes);
+    CHECK((end.wII > c.start.wII) == c.slides);
+    CHECK_FALSE(t.result.status.tangent_approximate);
+    CHECK(t.error < 1e-6);
+  }
+}

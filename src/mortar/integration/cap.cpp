@@ -50,11 +50,37 @@ Point end_of_step(const Model& M, const Point& P, const Vec3& dd, const Vec3& si
   return N;
 }
 
-struct CapSolution {
-  bool ok = false;
-  Vec3 sigma = Vec3::Zero(), w = Vec3::Zero();
-  double l1 = 0, lc = 0;
-};
+using Mat8 = Eigen::Matrix<double, 8, 8>;
+
+// The Newton matrix of the cap's residual (solve_cap) at x.
+Eigen::Matrix4d cap_jacobian(const Model& M, const CapSolution& x, double k0) {
+  const Vec3 K = closed_stiffness(M), n = cap_gradient(M, x.sigma);
+  Eigen::Matrix4d J = Eigen::Matrix4d::Zero();
+  J.topLeftCorner<3, 3>() = Mat3::Identity() + x.lc * K.asDiagonal() * cap_hessian(M, x.sigma);
+  J.topRightCorner<3, 1>() = K.cwiseProduct(n);
+  J.bottomLeftCorner<1, 3>() = n.transpose();
+  J(3, 3) = -cap_strength(M, k0 + x.lc).slope;
+  return J;
+}
+
+// The Newton matrix of the corner's residual (solve_corner) at x, with d Eq.
+// 2's derivatives there and ws the works rows' scale.
+Mat8 corner_jacobian(const Model& M, const CapSolution& x, const LocalDerivatives& d, double k0, double ws) {
+  const Vec3 K = closed_stiffness(M), n = cap_gradient(M, x.sigma);
+  Mat8 J = Mat8::Zero();
+  J.block<3, 3>(0, 0) = Mat3::Identity() + K.asDiagonal() * (x.l1 * d.m_sigma + x.lc * cap_hessian(M, x.sigma));
+  J.block<3, 3>(0, 3) = x.l1 * K.asDiagonal() * d.m_kappa;
+  J.block<3, 1>(0, 6) = K.cwiseProduct(d.m);
+  J.block<3, 1>(0, 7) = K.cwiseProduct(n);
+  J.block<3, 3>(3, 0) = -x.l1 * ws * d.g_sigma;
+  J.block<3, 3>(3, 3) = ws * (Mat3::Identity() - x.l1 * d.g_kappa);
+  J.block<3, 1>(3, 6) = -ws * d.g;
+  J.block<1, 3>(6, 0) = d.F_sigma.transpose();
+  J.block<1, 3>(6, 3) = d.F_kappa.transpose();
+  J.block<1, 3>(7, 0) = n.transpose();
+  J(7, 7) = -cap_strength(M, k0 + x.lc).slope;
+  return J;
+}
 
 // The cap alone: sigma = sigma_e - lc K m_c(sigma), F_c(sigma, kappa_c + lc) = 0.
 CapSolution solve_cap(const Model& M, const Point& P, const Vec3& sigma_e, IntegrationStatus& st) {
@@ -80,13 +106,7 @@ CapSolution solve_cap(const Model& M, const Point& P, const Vec3& sigma_e, Integ
       s.ok = s.sigma.allFinite() && std::isfinite(s.lc);
       return s;
     }
-    Eigen::Matrix4d J = Eigen::Matrix4d::Zero();
-    J.topLeftCorner<3, 3>() = Mat3::Identity() + s.lc * K.asDiagonal() * cap_hessian(M, s.sigma);
-    const Vec3 n = cap_gradient(M, s.sigma);
-    J.topRightCorner<3, 1>() = K.cwiseProduct(n);
-    J.bottomLeftCorner<1, 3>() = n.transpose();
-    J(3, 3) = -cap_strength(M, k0 + s.lc).slope;
-    const Eigen::Vector4d dx = J.partialPivLu().solve(-R);
+    const Eigen::Vector4d dx = cap_jacobian(M, s, k0).partialPivLu().solve(-R);
     if (!dx.allFinite()) return s;
     // Damped: the full step, halved while the residual grows.
     double t = 1;
@@ -110,7 +130,6 @@ CapSolution solve_cap(const Model& M, const Point& P, const Vec3& sigma_e, Integ
 // active together, from the start `s`.
 CapSolution solve_corner(const Model& M, const Point& P, const Vec3& sigma_e, CapSolution s, IntegrationStatus& st) {
   using Vec8 = Eigen::Matrix<double, 8, 1>;
-  using Mat8 = Eigen::Matrix<double, 8, 8>;
   const Vec3 K = closed_stiffness(M), w0(P.y.wI, P.y.wII, P.y.wIII);
   const double k0 = P.y.kappa_c, scale = std::max(sigma_e.norm(), M.stress_scale);
   const double wscale = std::max(M.p.GIC, M.p.GIIC);
@@ -131,21 +150,7 @@ CapSolution solve_corner(const Model& M, const Point& P, const Vec3& sigma_e, Ca
       s.ok = s.sigma.allFinite() && s.w.allFinite() && std::isfinite(s.l1) && std::isfinite(s.lc);
       return s;
     }
-    const Vec3 n = cap_gradient(M, s.sigma);
-    Mat8 J = Mat8::Zero();
-    J.block<3, 3>(0, 0) = Mat3::Identity() + K.asDiagonal() * (s.l1 * d.m_sigma + s.lc * cap_hessian(M, s.sigma));
-    J.block<3, 3>(0, 3) = s.l1 * K.asDiagonal() * d.m_kappa;
-    J.block<3, 1>(0, 6) = K.cwiseProduct(d.m);
-    J.block<3, 1>(0, 7) = K.cwiseProduct(n);
-    const double ws = scale / wscale;
-    J.block<3, 3>(3, 0) = -s.l1 * ws * d.g_sigma;
-    J.block<3, 3>(3, 3) = ws * (Mat3::Identity() - s.l1 * d.g_kappa);
-    J.block<3, 1>(3, 6) = -ws * d.g;
-    J.block<1, 3>(6, 0) = d.F_sigma.transpose();
-    J.block<1, 3>(6, 3) = d.F_kappa.transpose();
-    J.block<1, 3>(7, 0) = n.transpose();
-    J(7, 7) = -cap_strength(M, k0 + s.lc).slope;
-    const Vec8 dx = J.partialPivLu().solve(-R);
+    const Vec8 dx = corner_jacobian(M, s, d, k0, scale / wscale).partialPivLu().solve(-R);
     if (!dx.allFinite()) return s;
     double t = 1;
     for (int h = 0; h < 12; ++h, t *= 0.5) {
@@ -288,6 +293,7 @@ CapStep cap_backward_euler(const Model& M, const Point& P, const Vec3& dd, const
       out.involved = out.ok = out.plastic = true;
       out.N = end_of_step(M, P, dd, start.sigma, Vec3::Zero(), 0, Vec3(P.y.wI, P.y.wII, P.y.wIII),
                           cap_gradient(M, start.sigma), start.lc);
+      out.x = start;
       return out;
     }
     if (!start.ok) start.sigma = sigma_e, start.lc = 0;
@@ -296,18 +302,68 @@ CapStep cap_backward_euler(const Model& M, const Point& P, const Vec3& dd, const
   }
   out.involved = true;
   const CapSolution c = solve_corner(M, P, sigma_e, start, st);
-  // Koiter's rule: both multipliers non-negative at the corner; else the
-  // step has no consistent active set at this size, and is halved.
+  // Koiter's rule: both multipliers non-negative at the corner. From a trial
+  // beyond both surfaces where the cap's step ends beyond Eq. 2 and no such
+  // corner is found from there, the step of Eq. 2 alone is the candidate
+  // (the caller takes it, and comes back here, to the corner from its end,
+  // if it ends beyond the cap). Else the step has no consistent active set
+  // at this size, and is halved.
+  const bool corner = c.ok && c.l1 >= 0 && c.lc >= 0;
+  if (!one_surface && !corner && yield_function(sigma_e, S) > yield_tolerance(M, sigma_e)) {
+    out.involved = false;
+    return out;
+  }
   if (!c.ok || c.l1 < 0 || c.lc < 0) return out;
-  out.ok = out.plastic = true;
+  out.ok = out.plastic = out.corner = true;
   out.N = end_of_step(M, P, dd, c.sigma, local_derivatives(M, c.sigma, c.w).m, c.l1, c.w, cap_gradient(M, c.sigma),
                       c.lc);
+  out.x = c;
   return out;
+}
+
+// dx = -J^-1 (dR/d inputs) D inputs, with the inputs the trial sigma_P + K dd
+// (rows of sigma), the start's works w0 (rows of w) and kappa_c (the cap's
+// row). The works rows' scale cancels at R = 0: 1 here.
+Sensitivity cap_step_sensitivity(const Model& M, const Point& P, const CapStep& c, const Sensitivity& DP,
+                                 const Mat3& Ddd) {
+  Sensitivity D = DP;
+  D.separation = DP.separation + Ddd;
+  const Vec3 K = closed_stiffness(M), nc = cap_gradient(M, c.x.sigma);
+  const Mat3 Dtrial = DP.sigma + K.asDiagonal() * Ddd, Hc = cap_hessian(M, c.x.sigma);
+  const double k0 = P.y.kappa_c, slope = cap_strength(M, k0 + c.x.lc).slope;
+  Eigen::RowVector3d Dlc;
+  if (!c.corner) {
+    Eigen::Matrix<double, 4, 3> B;
+    B << -Dtrial, -slope * DP.kappa_c;
+    const Eigen::Matrix<double, 4, 3> Dx = -cap_jacobian(M, c.x, k0).fullPivLu().solve(B);
+    D.sigma = Dx.topRows<3>();
+    Dlc = Dx.row(3);
+    D.plastic = DP.plastic + nc * Dlc + c.x.lc * Hc * D.sigma;
+  } else {
+    const LocalDerivatives d = local_derivatives(M, c.x.sigma, c.x.w);
+    Eigen::Matrix<double, 8, 3> B;
+    B << -Dtrial, -DP.kappa, Eigen::RowVector3d::Zero(), -slope * DP.kappa_c;
+    const Eigen::Matrix<double, 8, 3> Dx = -corner_jacobian(M, c.x, d, k0, 1.0).fullPivLu().solve(B);
+    D.sigma = Dx.topRows<3>();
+    const Mat3 Dw = Dx.middleRows<3>(3);
+    const Eigen::RowVector3d Dl1 = Dx.row(6);
+    Dlc = Dx.row(7);
+    // wI and wIII never decrease (end_of_step): where the start's stands,
+    // its derivative does.
+    D.kappa.row(1) = Dw.row(1);
+    if (c.x.w[0] >= P.y.wI) D.kappa.row(0) = Dw.row(0);
+    if (c.x.w[2] >= P.y.wIII) D.kappa.row(2) = Dw.row(2);
+    D.plastic = DP.plastic + d.m * Dl1 + c.x.l1 * (d.m_sigma * D.sigma + d.m_kappa * Dw) + nc * Dlc +
+                c.x.lc * Hc * D.sigma;
+  }
+  D.kappa_c = DP.kappa_c + Dlc;
+  return D;
 }
 
 bool return_to_cap(const Model& M, Point& P, IntegrationStatus& st) {
   const CapStep c = cap_backward_euler(M, P, Vec3::Zero(), nullptr, st);
-  if (!c.involved) return true;
+  // Not involved: inside the cap, or no corner from a point beyond Eq. 2.
+  if (!c.involved) return cap_function(M, P.sigma, P.y.kappa_c) <= yield_tolerance(M, P.sigma);
   if (!c.ok) return false;
   P = c.N;
   return true;

@@ -7,6 +7,7 @@
 
 #include "mortar/integration/point.hpp"
 #include "mortar/integration/rate_statement.hpp"
+#include "mortar/integration/sensitivity.hpp"
 #include "mortar/physics/compression_cap.hpp"
 #include "mortar/result.hpp"
 
@@ -44,14 +45,24 @@ bool capped_stage(const Model& M, const Point& P, const SurfaceAt& at, const Vec
 // along K m_c, iterated).
 void correct_cap_drift(const Model& M, Point& P);
 
+// The unknowns of the cap's local problem (sigma, lc) or the corner's
+// (sigma, w, l1, lc): traction, works of Eqs. 7-9, the multipliers of Eq. 2
+// and of the cap.
+struct CapSolution {
+  bool ok = false;
+  Vec3 sigma = Vec3::Zero(), w = Vec3::Zero();
+  double l1 = 0, lc = 0;
+};
+
 // The backward-Euler step of a closed joint with a cap over dd, where the cap
 // is involved: the trial beyond it, or `one_surface` (the step of Eq. 2
 // alone, already taken) ending beyond it. Returns involved = false when the
-// one-surface step stands; else ok with N (before settle) or not ok (the
-// caller halves).
+// one-surface step stands; else ok with N (before settle) and the solution x
+// (at the corner when `corner`), or not ok (the caller halves).
 struct CapStep {
-  bool involved = false, ok = false, plastic = false;
+  bool involved = false, ok = false, plastic = false, corner = false;
   Point N;
+  CapSolution x;
 };
 CapStep cap_backward_euler(const Model& M, const Point& P, const Vec3& dd, const Point* one_surface,
                            IntegrationStatus& st);
@@ -59,6 +70,13 @@ CapStep cap_backward_euler(const Model& M, const Point& P, const Vec3& dd, const
 // The continuum tangent (Eq. 20) of a closed point on the cap: with its flow
 // alone, or with both at the corner. False where the point is not on the cap.
 bool capped_tangent(const Model& M, const State& y, const Vec3& sigma, const Surface& S, const Flow& f, Mat3& D);
+
+// The derivatives of a cap or corner step's end with respect to the call's
+// separation increment (the consistent tangent, docs/model.md 12): its local
+// residual at the solution, differentiated in the start point (DP) and the
+// step's separation increment (Ddd), through the same Newton matrix.
+Sensitivity cap_step_sensitivity(const Model& M, const Point& P, const CapStep& c, const Sensitivity& DP,
+                                 const Mat3& Ddd);
 
 // A closed point beyond the cap returned to it at fixed separation (the
 // backward-Euler step over dd = 0), the corner included.

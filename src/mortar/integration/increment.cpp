@@ -110,10 +110,11 @@ double IncrementIntegration::segment(const Vec3& rest, double frac, bool boundar
   if (a_y > 0) {
     P_.y.separation += a_y * rest;
     P_.sigma = traction_of(M_, P_.y);
-    if (tangent_) intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D);
+    if (tangent_) {
+      const bool on_cap = capped_ && cap_function(M_, P_.sigma, kappa_c_) > yield_function(P_.sigma, S);
+      intersection_sensitivity(M_, P_.y, P_.sigma, a_y, rest, K, *tangent_.D, on_cap);
+    }
   }
-  // The cap's intersection and steps carry no tangent (docs/model.md 12).
-  if (capped_ && tangent_) tangent_.lost = true;
   // The return at fixed separation changes the works; the elastic part only
   // the traction.
   if (relaxed) {

@@ -237,12 +237,13 @@ Attempt BackwardEuler::halved_or_failed(double dT) {
   return a;
 }
 
-// A step onto the cap or the corner (cap_backward_euler): its tangent is not
-// carried (docs/model.md 12), so the update's tangent becomes approximate.
+// A step onto the cap or the corner (cap_backward_euler), kept for its
+// tangent (cap_step_sensitivity).
 Attempt BackwardEuler::cap_attempt(const CapStep& c, const Point& P, double dT, const Rates& r1) {
   if (!c.ok) return halved_or_failed(dT);
   cap_step_ = true;
-  return end_at(c.N, P, dT, r1);
+  cap_ = c;
+  return end_at(cap_.N, P, dT, r1);
 }
 
 // Without error control the step doubles. With it the sizes stay halvings
@@ -296,16 +297,16 @@ double BackwardEuler::recheck(Point& Q, SurfaceAt& at, double dT, bool switch_he
 }
 
 void BackwardEuler::commit(Point& P, const Point& Q, SurfaceAt&, const Vec3& dd, double T, double dT, bool) {
-  const bool carry = tangent_ && !drift_corrected_ && !cap_step_;
+  const bool carry = tangent_ && !drift_corrected_;
   if (carry) {
     // This step covers dT/(1 - T) of what is left of the increment.
     Sensitivity& D = *tangent_.D;
     const Mat3 Ddd = (dT / (1 - T)) * (Mat3::Identity() - D.separation);
-    D = backward_euler_sensitivity(M_, P, dd, step_, D, Ddd);
+    D = cap_step_ ? cap_step_sensitivity(M_, P, cap_, D, Ddd) : backward_euler_sensitivity(M_, P, dd, step_, D, Ddd);
   }
   P = Q;
   if (carry) settle_sensitivity(M_, pre_settle_, sigma_pre_settle_, P.y, *tangent_.D);
-  if (drift_corrected_ || cap_step_) tangent_.forget(st_);
+  if (drift_corrected_) tangent_.forget(st_);
 }
 
 }  // namespace mortar

@@ -168,6 +168,7 @@ class BackwardEuler final : public SubstepScheme {
   Vec3 sigma_pre_settle_ = Vec3::Zero();
   bool drift_corrected_ = false;
   bool cap_step_ = false;  // the last step was onto the cap or the corner
+  CapStep cap_;            // that step, for its tangent
 };
 
 }  // namespace mortar

@@ -4,6 +4,7 @@
 
 #include <Eigen/LU>
 
+#include "mortar/physics/compression_cap.hpp"
 #include "mortar/physics/norms.hpp"
 
 namespace mortar {
@@ -113,15 +114,24 @@ Sensitivity backward_euler_sensitivity(const Model& M, const Point& P, const Vec
 }
 
 void intersection_sensitivity(const Model& M, const State& y, const Vec3& sigma, double a, const Vec3& rest,
-                              const Vec3& K, Sensitivity& D) {
+                              const Vec3& K, Sensitivity& D, bool on_cap) {
   D.separation += a * (Mat3::Identity() - D.separation);
   secant_sensitivity(M, y, D);  // at fixed a
-  const LocalDerivatives ld = local_derivatives(M, sigma, Vec3(y.wI, y.wII, y.wIII));
   const Vec3 k_rest = K.cwiseProduct(rest);
-  const double slope = ld.F_sigma.dot(k_rest);
+  // dF = F_sigma . D sigma + (the hardening's part), F of the surface met.
+  Vec3 F_sigma;
+  Eigen::RowVector3d dF_hardening;
+  if (on_cap) {
+    F_sigma = cap_gradient(M, sigma);
+    dF_hardening = -cap_strength(M, y.kappa_c).slope * D.kappa_c;
+  } else {
+    const LocalDerivatives ld = local_derivatives(M, sigma, Vec3(y.wI, y.wII, y.wIII));
+    F_sigma = ld.F_sigma;
+    dF_hardening = ld.F_kappa.transpose() * D.kappa;
+  }
+  const double slope = F_sigma.dot(k_rest);
   if (!(std::abs(slope) > 0)) return;
-  const Eigen::RowVector3d da =
-      -(ld.F_sigma.transpose() * D.sigma + ld.F_kappa.transpose() * D.kappa) / slope;
+  const Eigen::RowVector3d da = -(F_sigma.transpose() * D.sigma + dF_hardening) / slope;
   D.separation += rest * da;
   D.sigma += k_rest * da;
 }

@@ -16,6 +16,7 @@ using Mat23 = Eigen::Matrix<double, 2, 3>;
 struct Sensitivity {
   Mat3 sigma = Mat3::Zero(), kappa = Mat3::Zero(), plastic = Mat3::Zero(), separation = Mat3::Zero();
   Mat23 damage = Mat23::Zero();  // (d_n, d_s)
+  Eigen::RowVector3d kappa_c = Eigen::RowVector3d::Zero();  // the cap's (docs/model.md 12)
 };
 
 // The sensitivity of one increment, when a consistent tangent is requested.
@@ -55,7 +56,10 @@ Sensitivity backward_euler_sensitivity(const Model& M, const Point& P, const Vec
 // fraction moves with the increment, F(K o (e0 + a rest), kappa) = 0 gives
 // da = -(dF . dsigma|_a + dF/dkappa . dkappa) / (dF . K o rest). `y` and
 // `sigma` are the point at the intersection.
+// On a closed joint with a cap, the surface the intersection lies on is the
+// one whose F is the larger there (trial_yield): the cap's F_c(sigma,
+// kappa_c) where `on_cap`.
 void intersection_sensitivity(const Model& M, const State& y, const Vec3& sigma, double a, const Vec3& rest,
-                              const Vec3& K, Sensitivity& D);
+                              const Vec3& K, Sensitivity& D, bool on_cap = false);
 
 }  // namespace mortar

@@ -103,7 +103,11 @@ double Substepper::run(const Vec3& d, const SurfaceAt& at) {
     if (sep == Landing::cut) continue;
     const Landing normal = normal_completion(*a.end, SN, dT);
     if (normal == Landing::cut) continue;
-    if (surface_reached(*a.end, SN, dT) == Landing::cut) continue;
+    const Landing reached = surface_reached(*a.end, SN, dT);
+    if (reached == Landing::cut) continue;
+    // A substep cut to land on the other surface: its size depends on the
+    // increment, and the tangent holds it fixed (docs/model.md 12).
+    if (reached == Landing::lands) tangent_.lost = tangent_.lost || bool(tangent_);
     const bool separates = sep == Landing::lands;
     const Crossing crossing_kind = crossing(*a.end, dd, dT);
     if (crossing_kind == Crossing::from_boundary) {
