@@ -38,8 +38,8 @@ Outcome solve_on_branches(const Model& M, const Point& P, const Surface& S, cons
   return Outcome::plastic;
 }
 
-// N (P with its separation moved) at the end of a plastic step: traction
-// sigma, plastic increment dp, works kappa.
+}  // namespace
+
 void end_plastic_step(const Model& M, const Point& P, Point& N, const Vec3& sigma, const Vec3& dp,
                       const Vec3& kappa) {
   N.sigma = sigma;
@@ -55,8 +55,6 @@ void end_plastic_step(const Model& M, const Point& P, Point& N, const Vec3& sigm
   // trapezoidal external work = elastic energy change + dissipation exactly.
   N.y.dissipation_plastic += 0.5 * (P.sigma + N.sigma).dot(dp);
 }
-
-}  // namespace
 
 BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st,
                                  bool stage_branches) {

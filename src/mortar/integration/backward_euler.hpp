@@ -30,6 +30,12 @@ struct BackwardEulerStep {
 BackwardEulerStep backward_euler(const Model& M, const Point& P, const Vec3& dd, IntegrationStatus& st,
                                  bool stage_branches = true);
 
+// N (P with its separation moved) at the end of a plastic step of Eq. 2:
+// traction sigma, plastic increment dp (crack by Eq. 17), works kappa, the
+// dissipation trapezoidal in the traction.
+void end_plastic_step(const Model& M, const Point& P, Point& N, const Vec3& sigma, const Vec3& dp,
+                      const Vec3& kappa);
+
 // The closed-regime step that ends on the regime boundary delta_e_n = 0
 // (sigma_n = 0): the part theta of dd after which the backward-Euler end point
 // has zero normal traction. Used where a closed step whose trial is tensile

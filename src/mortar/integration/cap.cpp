@@ -38,15 +38,11 @@ Point end_of_step(const Model& M, const Point& P, const Vec3& dd, const Vec3& si
                   const Vec3& w, const Vec3& nc, double lc) {
   Point N = P;
   N.y.separation += dd;
-  const Vec3 dp1 = l1 * m1, dp = dp1 + lc * nc;
-  N.sigma = sigma;
-  N.y.plastic += dp;
-  N.y.crack += crack_ratio(M).cwiseProduct(dp1);
-  N.y.wI = std::max(w[0], P.y.wI);
-  N.y.wII = w[1];
-  N.y.wIII = std::max(w[2], P.y.wIII);
+  end_plastic_step(M, P, N, sigma, l1 * m1, w);  // Eq. 2's part
+  const Vec3 dpc = lc * nc;                      // the cap's: no crack, no work
+  N.y.plastic += dpc;
   N.y.kappa_c += lc;
-  N.y.dissipation_plastic += 0.5 * (P.sigma + sigma).dot(dp);
+  N.y.dissipation_plastic += 0.5 * (P.sigma + sigma).dot(dpc);
   return N;
 }
 
