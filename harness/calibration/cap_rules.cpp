@@ -54,11 +54,13 @@ OneCurve one_curve(const TestCurve& c, double kn) {
     const double si = r.fc / 3;
     r.kappa_p = 2 * crossing(kappa, s, peak, si + 0.75 * (r.fc - si), true);
     r.span = std::max(crossing(kappa, s, peak, 0.5 * r.fc, false) - r.kappa_p, 1e-9);
-    // fc by least squares of |sigma| = fc shape(kappa) over the points off
-    // the elastic branch (kappa > 0).
+    // fc by least squares of |sigma| = fc shape(kappa) over the two
+    // parabolas' points (kappa_p/4 to kappa_m): off the elastic branch, where
+    // noise in kappa is a large part of it, and off the tail, which hangs on
+    // the span.
     double num = 0, den = 0;
     for (size_t i = 0; i < s.size(); ++i)
-      if (kappa[i] > 0) {
+      if (kappa[i] >= 0.25 * r.kappa_p && kappa[i] <= r.kappa_p + r.span) {
         const double f = shape(kappa[i], std::max(r.kappa_p, 1e-12), r.span);
         num += f * s[i], den += f * f;
       }

@@ -50,7 +50,7 @@ void check_compression_values(const TestCurve& c) {
   const size_t k = largest_magnitude(c.y);
   double after = c.y[k];
   for (size_t i = k + 1; i < c.y.size(); ++i) after = std::max(after, c.y[i]);
-  if (after > 0.5 * c.y[k])
+  if (!(after > 0.5 * c.y[k]))
     throw InputError(c.file + ": the compression curve never falls below half its peak (" + value(c.y[k]) +
                      " MPa at data row " + std::to_string(k + 1) + ") after it: it records no softening (Gfc, kappa_m); "
                      "give the whole curve, through the peak and below fc/2");

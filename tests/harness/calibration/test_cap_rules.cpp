@@ -32,7 +32,7 @@ SyntheticTest compression_test(const Parameters& p, const CompressionCap& cap, i
 }
 
 std::string file_with(const std::string& name, const std::string& text) {
-  const auto dir = testing::fresh_directory("cap_curve_" + name);
+  const auto dir = harness::testing::fresh_directory("cap_curve_" + name);
   const std::string path = (dir / (name + ".csv")).string();
   std::ofstream(path) << text;
   return path;
@@ -40,9 +40,9 @@ std::string file_with(const std::string& name, const std::string& text) {
 }  // namespace
 
 TEST_CASE("a synthetic compression curve is read back with its kind and law signs", "[calibration][cap]") {
-  const Parameters p = testing::van_der_pluijm(-0.5);
+  const Parameters p = mortar::testing::van_der_pluijm(-0.5);
   const TestCurve c = synthetic_curve(p, compression_test(p, known_cap(), 40), 0.0, 7, "comp", known_cap());
-  const auto dir = testing::fresh_directory("cap_curve_roundtrip");
+  const auto dir = harness::testing::fresh_directory("cap_curve_roundtrip");
   const std::string path = (dir / "comp.csv").string();
   write_test_curve(path, c, {"SYNTHETIC"});
   const TestCurve back = read_test_curve(path);
@@ -54,7 +54,7 @@ TEST_CASE("a synthetic compression curve is read back with its kind and law sign
 }
 
 TEST_CASE("the cap's direct rules recover fc, Gfc and kappa_p from noisy synthetic curves", "[calibration][cap]") {
-  const Parameters p = testing::van_der_pluijm(-0.5);
+  const Parameters p = mortar::testing::van_der_pluijm(-0.5);
   const CompressionCap truth = known_cap();
   for (double noise : {0.0, 0.02}) {
     for (std::uint32_t seed : {11u, 12u, 13u}) {
@@ -78,7 +78,7 @@ TEST_CASE("the cap's direct rules recover fc, Gfc and kappa_p from noisy synthet
 
 TEST_CASE("a cap the joint's parameters reject is an error naming the rule", "[calibration][cap]") {
   // A strong joint: fc/3 must exceed sqrt(ft0^2 + Cs c0^2) at Cs = 9.
-  Parameters p = testing::van_der_pluijm(-0.5);
+  Parameters p = mortar::testing::van_der_pluijm(-0.5);
   const CompressionCap truth = known_cap();
   const std::vector<TestCurve> curves = {synthetic_curve(p, compression_test(p, truth, 40), 0.0, 3, "comp", truth)};
   p.c0 = 1.5;
