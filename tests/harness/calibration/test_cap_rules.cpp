@@ -56,19 +56,22 @@ TEST_CASE("a synthetic compression curve is read back with its kind and law sign
 TEST_CASE("the cap's direct rules recover fc, Gfc and kappa_p from noisy synthetic curves", "[calibration][cap]") {
   const Parameters p = mortar::testing::van_der_pluijm(-0.5);
   const CompressionCap truth = known_cap();
+  // Measured (2 % noise, seeds 11-20): fc within 2.6 %, Gfc 1.9 %, kappa_p
+  // 16 % (the pre-peak parabola is flat near the peak); noise-free 0.03 %,
+  // 0.01 %, 0.3 %.
   for (double noise : {0.0, 0.02}) {
-    for (std::uint32_t seed : {11u, 12u, 13u}) {
+    for (std::uint32_t seed = 11; seed <= (noise > 0 ? 20u : 11u); ++seed) {
       INFO("noise " << noise << ", seed " << seed);
       const std::vector<TestCurve> curves = {
           synthetic_curve(p, compression_test(p, truth, 40), noise, seed, "comp", truth)};
       const CapEstimate e = estimate_cap(curves, p);
       const double dfc = std::abs(e.cap.fc / truth.fc - 1), dG = std::abs(e.cap.Gfc / truth.Gfc - 1),
                    dk = std::abs(e.cap.kappa_p / truth.kappa_p - 1);
-      WARN("fc " << e.cap.fc << " (" << dfc << "), Gfc " << e.cap.Gfc << " (" << dG << "), kappa_p " << e.cap.kappa_p
+      UNSCOPED_INFO("fc " << e.cap.fc << " (" << dfc << "), Gfc " << e.cap.Gfc << " (" << dG << "), kappa_p " << e.cap.kappa_p
                  << " (" << dk << ")");
-      CHECK(dfc < (noise > 0 ? 0.03 : 0.01));
-      CHECK(dG < (noise > 0 ? 0.10 : 0.03));
-      CHECK(dk < (noise > 0 ? 0.30 : 0.05));
+      CHECK(dfc < (noise > 0 ? 0.04 : 0.002));
+      CHECK(dG < (noise > 0 ? 0.05 : 0.002));
+      CHECK(dk < (noise > 0 ? 0.25 : 0.01));
       CHECK(e.cap.Cs == kDefaultCs);
       CHECK(e.Cs_held);
       CHECK(validate(e.cap, p).ok());
