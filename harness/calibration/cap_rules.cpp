@@ -87,12 +87,32 @@ CapEstimate estimate_cap(const std::vector<TestCurve>& curves, const Parameters&
   e.cap.Gfc = 481 * fc * span / 588;
   e.cap.Cs = kDefaultCs;
   e.notes.push_back("fc, kappa_p, Gfc: direct rules on " + std::to_string(n) + " compression curve(s)");
-  e.notes.push_back("Cs: held at " + number_text(kDefaultCs) + " (Lourenco & Rots), no shear curve with its peak on the cap");
+  // Cs from the shear curves whose peak lies on the cap: under compression
+  // below fc and more than 5 % under the hyperbola of Eqs. 2-3; there the
+  // peak is radius fc, tau_p^2 = (fc^2 - sigma_n^2)/Cs.
+  const double t = std::tan(p.phi0 * M_PI / 180), C = p.c0 * p.c0 / p.ft0;
+  const double alpha = (C / t - p.ft0 * t) / 2, beta = (C / t + p.ft0 * t) / 2;
+  double Cs = 0;
+  int m = 0;
+  for (const TestCurve& c : curves) {
+    if (c.kind != TestKind::shear || !(c.sigma_n < 0) || -c.sigma_n >= fc) continue;
+    const double peak = *std::max_element(c.y.begin(), c.y.end());
+    const double hyperbola = std::sqrt(std::pow(beta - c.sigma_n * t, 2) - alpha * alpha);
+    if (!(peak > 0) || peak > 0.95 * hyperbola) continue;
+    Cs += (fc * fc - c.sigma_n * c.sigma_n) / (peak * peak), ++m;
+  }
+  if (m) {
+    e.cap.Cs = Cs / m, e.Cs_held = false;
+    e.notes.push_back("Cs: tau_p^2 = (fc^2 - sigma_n^2)/Cs on " + std::to_string(m) +
+                      " shear curve(s) whose peak lies on the cap (more than 5 % below the hyperbola)");
+  } else {
+    e.notes.push_back("Cs: held at " + number_text(kDefaultCs) + " (Lourenco & Rots), no shear curve with its peak on the cap");
+  }
   const ValidationError v = validate(e.cap, p);
   if (!v.ok())
     throw InputError("calibrate: the cap from the compression curves (fc = " + number_text(fc) + " MPa, Gfc = " +
                      number_text(e.cap.Gfc) + " N/mm, kappa_p = " + number_text(kp) + " mm, Cs = " +
-                     number_text(kDefaultCs) + ") is not valid with the joint's parameters: " + v.message());
+                     number_text(e.cap.Cs) + ") is not valid with the joint's parameters: " + v.message());
   return e;
 }
 

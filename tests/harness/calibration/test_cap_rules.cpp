@@ -79,6 +79,36 @@ TEST_CASE("the cap's direct rules recover fc, Gfc and kappa_p from noisy synthet
   }
 }
 
+TEST_CASE("Cs from a shear curve whose peak lies on the cap, else held at 9", "[calibration][cap]") {
+  const Parameters p = mortar::testing::van_der_pluijm(-0.5);
+  CompressionCap truth = known_cap();
+  truth.Cs = 5;  // not the default, so that a held Cs would fail
+  SyntheticTest high;  // at -5 MPa the hyperbola's peak is about 5 MPa, the cap's 3.9
+  // To about 0.3 mm of slip: the cap softens, and at fc/2 = |sigma_n| it can no
+  // longer carry the normal stress (the run fails there, as a test would).
+  high.sigma_n = -5, high.travel = 0.3, high.points = 40, high.uplift = false;
+  SyntheticTest low = high;  // at -0.5 MPa the peak is the hyperbola's: not read for Cs
+  low.sigma_n = -0.5;
+  for (double noise : {0.0, 0.02}) {
+    for (std::uint32_t seed = 21; seed <= (noise > 0 ? 25u : 21u); ++seed) {
+      INFO("noise " << noise << ", seed " << seed);
+      const std::vector<TestCurve> curves = {
+          synthetic_curve(p, compression_test(p, truth, 40), noise, seed, "comp", truth),
+          synthetic_curve(p, high, noise, seed + 100, "shear_5", truth),
+          synthetic_curve(p, low, noise, seed + 200, "shear_05", truth)};
+      const CapEstimate e = estimate_cap(curves, p);
+      UNSCOPED_INFO("Cs " << e.cap.Cs << ", fc " << e.cap.fc);
+      CHECK_FALSE(e.Cs_held);
+      CHECK(std::abs(e.cap.Cs / truth.Cs - 1) < (noise > 0 ? 0.20 : 0.01));  // measured: 14 % and 0.07 %
+    }
+  }
+  const CapEstimate held = estimate_cap({synthetic_curve(p, compression_test(p, truth, 40), 0.0, 3, "comp", truth),
+                                         synthetic_curve(p, low, 0.0, 4, "shear_05", truth)},
+                                        p);
+  CHECK(held.Cs_held);
+  CHECK(held.cap.Cs == kDefaultCs);
+}
+
 TEST_CASE("a cap the joint's parameters reject is an error naming the rule", "[calibration][cap]") {
   // A strong joint: fc/3 must exceed sqrt(ft0^2 + Cs c0^2) at Cs = 9.
   Parameters p = mortar::testing::van_der_pluijm(-0.5);
