@@ -38,16 +38,18 @@ size_t largest_magnitude(const std::vector<double>& v) {
 // Law signs: the closure >= 0 (minus the normal separation) and sigma <= 0;
 // a tension value is a sign mistake or a test that opened the joint.
 void check_compression_values(const TestCurve& c) {
+  const size_t k = largest_magnitude(c.y);
+  // Noise about zero at the start is no tension: 5 % of the peak is allowed.
+  const double tension_limit = 0.05 * std::abs(c.y[k]);
   for (size_t i = 0; i < c.x.size(); ++i) {
     const std::string row = c.file + ": data row " + std::to_string(i + 1) + ": ";
     if (c.x[i] < 0)
       throw InputError(row + "closure = " + value(c.x[i]) + " mm is negative: a compression curve's closure is >= 0 "
                              "(minus the normal separation; an opening belongs to a tension curve)");
-    if (c.y[i] > 0)
+    if (c.y[i] > tension_limit)
       throw InputError(row + "sigma = " + value(c.y[i]) + " MPa is a tension: a compression curve holds sigma <= 0 "
-                             "(law signs, compression negative)");
+                             "(law signs, compression negative; noise up to 5 % of the peak allowed)");
   }
-  const size_t k = largest_magnitude(c.y);
   double after = c.y[k];
   for (size_t i = k + 1; i < c.y.size(); ++i) after = std::max(after, c.y[i]);
   if (!(after > 0.5 * c.y[k]))
