@@ -131,7 +131,11 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
   std::ostringstream md;
   write_report(md, o.out_dir, report);
   out << terminal_text(md.str(), o.wide);
-  if (o.plots) draw(o.out_dir, curves, report, err);
+  if (o.plots) {
+    std::vector<TestCurve> drawn = curves;  // the compression curves in their own panels
+    drawn.insert(drawn.end(), compression.begin(), compression.end());
+    draw(o.out_dir, drawn, report, err);
+  }
   for (const std::string& line : run.outliers) err << "calibrate: warning: " << line << "\n";
   // The one set decides, unless the sets per sigma_n were asked for and pass.
   const bool handed = run.one_set_verdict.accepted() || (run.per_level_fitted && run.per_level_verdict.accepted());
