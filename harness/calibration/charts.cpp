@@ -1,10 +1,12 @@
 // The calibration's charts (report.hpp, write_calibration_plots): a gnuplot
 // script over the fit_<curve>.csv files, 2 x 3 panels: shear, dilatancy and
-// tension above, each quantity's own residuals below. The slip axes are
+// tension above (and compression, when given: 2 x 4), each quantity's own
+// residuals below. The slip axes are
 // logarithmic: on a linear axis the peaks sat in the first 5-7 % of it.
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <vector>
 
 #include "calibration/report.hpp"
 #include "input/input_error.hpp"
@@ -23,7 +25,7 @@ std::string fmt(const char* f, double x) {
 
 // The legend of a curve: its sigma_n (tension: "tension") and its misfit.
 std::string legend(const TestCurve& c, const FitResult* fit) {
-  std::string s = c.shear() ? fmt("σn = %g MPa", c.sigma_n) : std::string("tension");
+  std::string s = c.shear() ? fmt("σn = %g MPa", c.sigma_n) : std::string(c.compression() ? "compression" : "tension");
   if (fit)
     for (const CurveMisfit& m : fit->misfit)
       if (m.curve == c.name) s += m.failed ? " (run failed)" : fmt(" (RMS %.3f)", m.rms_scaled);
@@ -61,18 +63,26 @@ std::string write_calibration_plots(const std::string& out_dir, const std::vecto
   g << "# Written by masonry-joint calibrate; rerun with: gnuplot " << name << "\nset datafile separator \",\"\n";
   auto shear = [](const TestCurve& c) { return c.shear(); };
   auto uplift = [](const TestCurve& c) { return c.has_uplift(); };
-  auto tension = [](const TestCurve& c) { return !c.shear(); };
-  const Panel panels[] = {
+  auto tension = [](const TestCurve& c) { return !c.shear() && !c.compression(); };
+  auto compression = [](const TestCurve& c) { return c.compression(); };
+  bool crushed = false;  // a compression curve: a fourth column
+  for (const TestCurve& c : curves) crushed = crushed || c.compression();
+  std::vector<Panel> panels = {
       {"Shear: data (points), fit (lines)", "slip [mm] (log)", "{/Symbol t} [MPa]", "2", "3", true, shear},
       {"Dilatancy", "slip [mm] (log)", "uplift [mm]", "5", "6", true, uplift},
       {"Tension", "opening [mm]", "{/Symbol s} [MPa]", "2", "3", false, tension},
       {"Shear residuals (fit - data)", "slip [mm] (log)", "{/Symbol t} [MPa]", "4", "", true, shear},
       {"Uplift residuals (fit - data)", "slip [mm] (log)", "uplift [mm]", "7", "", true, uplift},
       {"Tension residuals (fit - data)", "opening [mm]", "{/Symbol s} [MPa]", "4", "", false, tension}};
+  if (crushed) {
+    panels.insert(panels.begin() + 3, {"Compression (with the cap)", "closure [mm]", "{/Symbol s} [MPa]", "2", "3", false,
+                                       compression});
+    panels.push_back({"Compression residuals (fit - data)", "closure [mm]", "{/Symbol s} [MPa]", "4", "", false, compression});
+  }
   for (const char* ext : {"png", "svg"}) {
     g << "\nset terminal " << (ext[0] == 'p' ? "pngcairo" : "svg")
-      << " size 1500,950 enhanced font \"DejaVu Sans,10\" background \"white\"\nset output \"calibration." << ext
-      << "\"\nset grid lc rgb \"#c8c8c8\"\nset key top right font \",9\"\nset multiplot layout 2,3 title "
+      << " size " << (crushed ? 2000 : 1500) << ",950 enhanced font \"DejaVu Sans,10\" background \"white\"\nset output \"calibration." << ext
+      << "\"\nset grid lc rgb \"#c8c8c8\"\nset key top right font \",9\"\nset multiplot layout 2," << (crushed ? 4 : 3) << " title "
       << title(r) << " noenhanced\n";
     for (const Panel& p : panels) {
       g << "set title " << quoted(p.title) << "\nset xlabel " << quoted(p.xlabel) << "\nset ylabel " << quoted(p.ylabel)

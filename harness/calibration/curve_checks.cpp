@@ -35,11 +35,34 @@ size_t largest_magnitude(const std::vector<double>& v) {
   return k;
 }
 
+// Law signs: the closure >= 0 (minus the normal separation) and sigma <= 0;
+// a tension value is a sign mistake or a test that opened the joint.
+void check_compression_values(const TestCurve& c) {
+  const size_t k = largest_magnitude(c.y);
+  // Noise about zero at the start is no tension: 5 % of the peak is allowed.
+  const double tension_limit = 0.05 * std::abs(c.y[k]);
+  for (size_t i = 0; i < c.x.size(); ++i) {
+    const std::string row = c.file + ": data row " + std::to_string(i + 1) + ": ";
+    if (c.x[i] < 0)
+      throw InputError(row + "closure = " + value(c.x[i]) + " mm is negative: a compression curve's closure is >= 0 "
+                             "(minus the normal separation; an opening belongs to a tension curve)");
+    if (c.y[i] > tension_limit)
+      throw InputError(row + "sigma = " + value(c.y[i]) + " MPa is a tension: a compression curve holds sigma <= 0 "
+                             "(law signs, compression negative; noise up to 5 % of the peak allowed)");
+  }
+  double after = c.y[k];
+  for (size_t i = k + 1; i < c.y.size(); ++i) after = std::max(after, c.y[i]);
+  if (!(after > 0.5 * c.y[k]))
+    throw InputError(c.file + ": the compression curve never falls below half its peak (" + value(c.y[k]) +
+                     " MPa at data row " + std::to_string(k + 1) + ") after it: it records no softening (Gfc, kappa_m); "
+                     "give the whole curve, through the peak and below fc/2");
+}
+
 }  // namespace
 
 void check_curve_values(const TestCurve& c) {
   const bool shear = c.shear();
-  const char* x = shear ? "slip" : "opening";
+  const char* x = shear ? "slip" : c.compression() ? "closure" : "opening";
   const char* y = shear ? "tau" : "sigma";
   check_range(c, c.x, x, "mm", kMaxDisplacement);
   check_range(c, c.y, y, "MPa", kMaxTraction);
@@ -52,6 +75,7 @@ void check_curve_values(const TestCurve& c) {
     throw InputError(c.file + ": every " + y + " is zero: the curve records no traction (an empty column, or the " +
                      "wrong column exported?)");
   if (c.kind == TestKind::cyclic_shear) return;  // both signs are part of a cyclic test
+  if (c.compression()) return check_compression_values(c);
   // Law signs (docs/model.md 1): the opening and the tension positive; the
   // slip positive in the direction of shearing and tau with it.
   if (c.y[k] < 0 || c.x.back() < 0)

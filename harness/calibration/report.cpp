@@ -106,6 +106,7 @@ void write_report(std::ostream& out, const std::string& out_dir, const Calibrati
        << " times the robust scatter of all points (calibration/acceptance.hpp); check them in the data:\n\n";
     for (const std::string& o : *r.outliers) md << "- " << o << "\n";
   }
+  md << r.cap_section;
   md << "\n## Notes\n\n";
   for (const std::string& h : r.one_set->held) md << "- held: " << h << "\n";
   for (const std::string& n : r.final.notes) md << "- " << n << "\n";

@@ -28,6 +28,7 @@ struct CalibrationReport {
   const Verdict* verdict = nullptr;            // of the one set (calibration/acceptance.hpp)
   const Verdict* per_level_verdict = nullptr;  // of the sets per sigma_n
   const std::vector<std::string>* outliers = nullptr;
+  std::string cap_section{};  // Markdown on the compression cap, "" without compression curves
 };
 
 // The report as Markdown: printed and written to <out_dir>/report.md.

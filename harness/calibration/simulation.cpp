@@ -31,20 +31,21 @@ Protocol protocol_for(const TestCurve& c, const SimulationSettings& s) {
     step.increments = std::max(1L, static_cast<long>(std::ceil(std::abs(c.x[i] - last) / h)));
     // A component a step leaves out holds; both are written for clarity.
     step.component[0] = c.shear() ? ComponentProgram{Control::traction, c.sigma_n} : ComponentProgram{};
-    step.component[along] = {Control::displacement, c.x[i]};
+    step.component[along] = {Control::displacement, c.compression() ? -c.x[i] : c.x[i]};
     p.steps.push_back(step);
     last = c.x[i];
   }
   return p;
 }
 
-SimulatedCurve simulate(const Parameters& p, const TestCurve& c, const SimulationSettings& s) {
+SimulatedCurve simulate(const Parameters& p, const TestCurve& c, const SimulationSettings& s, const CompressionCap& cap) {
   const Protocol protocol = protocol_for(c, s);
   const int first = c.shear() ? 1 : 0;  // program steps before the first data point
   std::vector<Sample> end_of_step(protocol.steps.size() + 1);
   RunSettings run;
   run.scheme = s.scheme;
   run.stol = s.stol;
+  run.cap = cap;
   run_protocol(p, protocol, run, [&](int, const Sample& sample) { end_of_step[sample.step] = sample; });
   SimulatedCurve out;
   const int j = c.shear() ? 1 : 0;

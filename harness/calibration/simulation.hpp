@@ -4,7 +4,8 @@
 // that every data point is an increment end and nothing is interpolated.
 //  - tension: the opening is imposed (displacement control), no slip;
 //  - shear kinds: the normal stress is applied first with the slip held at
-//    zero, then held while the slip goes through the data's slips.
+//    zero, then held while the slip goes through the data's slips;
+//  - compression: the closure is imposed (normal separation -closure), no slip.
 #pragma once
 
 #include <vector>
@@ -36,6 +37,8 @@ Protocol protocol_for(const TestCurve& curve, const SimulationSettings& settings
 
 // Throws RunFailure when the run cannot be completed (e.g. a normal stress
 // the joint cannot carry).
-SimulatedCurve simulate(const Parameters& p, const TestCurve& curve, const SimulationSettings& settings);
+// `cap`: the compression cap (off by default, the paper's law).
+SimulatedCurve simulate(const Parameters& p, const TestCurve& curve, const SimulationSettings& settings,
+                        const CompressionCap& cap = CompressionCap{});
 
 }  // namespace mortar::harness

@@ -130,20 +130,22 @@ std::vector<size_t> digitised_indices(const std::vector<double>& x, const std::v
 }  // namespace
 
 TestCurve synthetic_curve(const Parameters& p, const SyntheticTest& t, double noise, std::uint32_t seed,
-                          const std::string& name) {
+                          const std::string& name, const CompressionCap& cap) {
   TestCurve dense;
   dense.name = name;
   dense.kind = t.kind;
   dense.sigma_n = t.sigma_n;
   // Three times the elastic limit: ft0/kn in tension, at most
   // (c0 + |sigma_n| tan phi0)/ks in shear (Eq. 2 at s = 1).
-  const double limit = !dense.shear() ? p.ft0 / p.kn
-                                                   : (p.c0 - t.sigma_n * std::tan(p.phi0 * M_PI / 180)) / p.ks;
+  // Compression: the elastic closure at fc.
+  const double limit = dense.compression() ? cap.fc / p.kn
+                       : !dense.shear()    ? p.ft0 / p.kn
+                                           : (p.c0 - t.sigma_n * std::tan(p.phi0 * M_PI / 180)) / p.ks;
   dense.x = dense_path(t, 3 * limit);
   SimulationSettings fine;
   fine.increments = static_cast<int>(dense.x.size());
   fine.stol = 1e-7;
-  const SimulatedCurve sim = simulate(p, dense, fine);
+  const SimulatedCurve sim = simulate(p, dense, fine, cap);
   TestCurve out = dense;
   out.x.clear();
   const bool uplift = dense.shear() && t.uplift;

@@ -46,8 +46,9 @@ std::vector<SyntheticTest> unloading_programme(const Parameters& p, int points);
 // digitiser clicks it. Then Gaussian noise of standard deviation
 // `noise` x the curve's largest |value| on the ordinate and the uplift
 // (noise = 0.02: 2 %). Deterministic for a given seed.
+// Compression tests (kind compression, travel a closure) need `cap` on.
 TestCurve synthetic_curve(const Parameters& p, const SyntheticTest& test, double noise, std::uint32_t seed,
-                          const std::string& name);
+                          const std::string& name, const CompressionCap& cap = CompressionCap{});
 
 // The curves without the sample at each shear curve's largest tau: a peak
 // the test's sampling missed (the coverage study and the fit's tests).

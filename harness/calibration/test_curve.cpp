@@ -23,6 +23,7 @@ const char* test_kind_name(TestKind k) {
     case TestKind::cyclic_tension: return "cyclic_tension";
     case TestKind::shear: return "shear";
     case TestKind::cyclic_shear: return "cyclic_shear";
+    case TestKind::compression: return "compression";
   }
   return "unknown";
 }
@@ -58,11 +59,12 @@ Metadata read_metadata(const std::string& path) {
 TestKind parse_kind(const std::string& path, const Metadata& m) {
   if (!m.kind_line)
     throw InputError(path + ": states no kind of test: a test curve needs a line '# kind: tension', "
-                            "'# kind: cyclic_tension', '# kind: shear' or '# kind: cyclic_shear'");
-  for (TestKind k : {TestKind::tension, TestKind::cyclic_tension, TestKind::shear, TestKind::cyclic_shear})
+                            "'# kind: cyclic_tension', '# kind: shear', '# kind: cyclic_shear' or '# kind: compression'");
+  for (TestKind k : {TestKind::tension, TestKind::cyclic_tension, TestKind::shear, TestKind::cyclic_shear,
+                     TestKind::compression})
     if (m.kind == test_kind_name(k)) return k;
   throw InputError(path + ":" + std::to_string(m.kind_line) + ": kind '" + m.kind +
-                   "' is not one of tension, cyclic_tension, shear, cyclic_shear");
+                   "' is not one of tension, cyclic_tension, shear, cyclic_shear, compression");
 }
 
 // "-0.5 MPa": the number and its unit, which must be MPa (never converted).
@@ -90,9 +92,10 @@ double parse_sigma_n(const std::string& path, const Metadata& m, TestKind kind) 
 }
 
 void check_columns(const CsvTable& t, TestKind kind) {
-  const std::vector<std::string> allowed = kind == TestKind::tension || kind == TestKind::cyclic_tension
-                                               ? std::vector<std::string>{"opening_mm", "sigma_MPa"}
-                                               : std::vector<std::string>{"slip_mm", "tau_MPa", "uplift_mm"};
+  const std::vector<std::string> allowed = kind == TestKind::compression ? std::vector<std::string>{"closure_mm", "sigma_MPa"}
+                                          : kind == TestKind::tension || kind == TestKind::cyclic_tension
+                                              ? std::vector<std::string>{"opening_mm", "sigma_MPa"}
+                                              : std::vector<std::string>{"slip_mm", "tau_MPa", "uplift_mm"};
   for (const std::string& h : t.header)
     if (std::find(allowed.begin(), allowed.end(), h) == allowed.end()) {
       std::string list;
@@ -115,11 +118,11 @@ TestCurve read_test_curve(const std::string& path) {
                      " curve needs its constant normal stress: a line '# sigma_n: -0.5 MPa'");
   if (!c.shear() && m.sigma_line)
     throw InputError(path + ":" + std::to_string(m.sigma_line) +
-                     ": a tension curve has no constant normal stress; remove the sigma_n line");
+                     ": a " + test_kind_name(c.kind) + " curve has no constant normal stress; remove the sigma_n line");
   if (c.shear()) c.sigma_n = parse_sigma_n(path, m, c.kind);
   const CsvTable t = read_csv(path);
   check_columns(t, c.kind);
-  c.x = t.values(c.shear() ? "slip_mm" : "opening_mm");
+  c.x = t.values(c.shear() ? "slip_mm" : c.compression() ? "closure_mm" : "opening_mm");
   c.y = t.values(c.shear() ? "tau_MPa" : "sigma_MPa");
   if (t.column("uplift_mm") >= 0) c.uplift = t.values("uplift_mm");
   if (c.x.size() < 4)
@@ -128,7 +131,7 @@ TestCurve read_test_curve(const std::string& path) {
   if (!c.cycles())
     for (size_t i = 1; i < c.x.size(); ++i)
       if (c.x[i] < c.x[i - 1])
-        throw InputError(path + ": row " + std::to_string(i + 1) + ": " + (c.shear() ? "slip" : "opening") + " " +
+        throw InputError(path + ": row " + std::to_string(i + 1) + ": " + (c.shear() ? "slip" : c.compression() ? "closure" : "opening") + " " +
                          std::to_string(c.x[i]) + " mm is below the row before (" + std::to_string(c.x[i - 1]) +
                          " mm): a monotonic test's abscissa never decreases (tests with unloading: kind cyclic_tension or "
                          "cyclic_shear)");
@@ -158,7 +161,7 @@ void write_test_curve(const std::string& path, const TestCurve& c, const std::ve
   out << "# kind: " << test_kind_name(c.kind) << "\n";
   out.precision(6);
   if (c.shear()) out << "# sigma_n: " << c.sigma_n << " MPa\n";
-  out << (c.shear() ? "slip_mm,tau_MPa" : "opening_mm,sigma_MPa") << (c.has_uplift() ? ",uplift_mm" : "") << "\n";
+  out << (c.shear() ? "slip_mm,tau_MPa" : c.compression() ? "closure_mm,sigma_MPa" : "opening_mm,sigma_MPa") << (c.has_uplift() ? ",uplift_mm" : "") << "\n";
   out.precision(7);
   for (size_t i = 0; i < c.x.size(); ++i) {
     out << c.x[i] << "," << c.y[i];

@@ -5,11 +5,13 @@
 // skips the comment lines); it is documented in calibration_data/README.md
 // and harness/README.md:
 //
-//   # kind: shear                 tension | cyclic_tension | shear | cyclic_shear
+//   # kind: shear                 tension | cyclic_tension | shear | cyclic_shear | compression
 //   # sigma_n: -0.5 MPa           shear kinds only; law signs, compression < 0
 //                                 (cyclic_shear may hold a tension, > 0: its
 //                                 unloading branches are open and give bs)
 //   slip_mm,tau_MPa,uplift_mm     tension: opening_mm,sigma_MPa
+//                                 compression: closure_mm,sigma_MPa (closure
+//                                 >= 0, never decreasing; sigma law signs, <= 0)
 //
 // Units are part of the column names and of the sigma_n line; the reader
 // never converts.
@@ -20,7 +22,7 @@
 
 namespace mortar::harness {
 
-enum class TestKind { tension, cyclic_tension, shear, cyclic_shear };
+enum class TestKind { tension, cyclic_tension, shear, cyclic_shear, compression };
 const char* test_kind_name(TestKind k);
 
 struct TestCurve {
@@ -28,10 +30,11 @@ struct TestCurve {
   std::string name;  // file stem: names the curve in the report and the plots
   TestKind kind = TestKind::shear;
   double sigma_n = 0;         // constant normal stress of a shear test [MPa], law signs (compression < 0)
-  std::vector<double> x;      // opening (tension) or slip (shear) [mm], in test order
-  std::vector<double> y;      // sigma_n (tension) or tau (shear) [MPa]
+  std::vector<double> x;      // opening (tension), slip (shear) or closure (compression, >= 0) [mm], in test order
+  std::vector<double> y;      // sigma_n (tension, compression: law signs) or tau (shear) [MPa]
   std::vector<double> uplift; // normal opening since the start of shearing [mm]; empty when not measured
 
+  bool compression() const { return kind == TestKind::compression; }
   bool shear() const { return kind == TestKind::shear || kind == TestKind::cyclic_shear; }
   // Unloading-reloading or reversals: the abscissa may decrease.
   bool cycles() const { return kind == TestKind::cyclic_tension || kind == TestKind::cyclic_shear; }

@@ -9,6 +9,8 @@
 //   calibration_study direct        the direct rules' errors over 20 seeds, 1 % and 3 % noise
 //   calibration_study coverage      the one set's standard errors against the spread of 20 noisy
 //                                   draws, with and without each shear curve's peak sample
+//   calibration_study compression DIR  the example's curves and a compression curve made with
+//                                   a cap: calibration_data/synthetic_compression/
 //   calibration_study unloading [DIR]  bn and bs from curves with unloading branches over 10
 //                                   seeds; with DIR writes calibration_data/synthetic_unloading/
 #include <algorithm>
@@ -200,6 +202,23 @@ int main(int argc, char** argv) {
                   "of the curve's largest value (seed 2024). See README.md here."});
     return 0;
   }
+  if (argc == 3 && !std::strcmp(argv[1], "compression")) {
+    const Parameters p = testing::van_der_pluijm(-0.5);
+    const CompressionCap cap{10, 9, 2, 0.05};
+    std::vector<TestCurve> curves = curves_of(same(p), 0.02, 30, 2024);
+    SyntheticTest crush;
+    crush.kind = TestKind::compression;
+    crush.travel = cap.fc / p.kn + cap.kappa_p + 4 * 588 * cap.Gfc / (481 * cap.fc);
+    crush.points = 40;
+    crush.uplift = false;
+    curves.push_back(synthetic_curve(p, crush, 0.02, 2026, "compression", cap));
+    write_curves(argv[2], curves,
+                 {"SYNTHETIC, not experimental: made by calibration_study compression from the law with",
+                  "van der Pluijm's Table 1 set (m, n of sigma_n = -0.5 MPa) and the cap fc = 10 MPa,",
+                  "Cs = 9, Gfc = 2 N/mm, kappa_p = 0.05 mm, resampled in arc length on the chart's scaled",
+                  "axes, plus Gaussian noise of 2 % of the curve's largest value (seeds 2024, 2026)."});
+    return 0;
+  }
   if (argc == 2 && !std::strcmp(argv[1], "recovery")) {
     using testing::van_der_pluijm;
     recovery("van der Pluijm, m and n of Table 1 per sigma_n",
@@ -257,6 +276,6 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  std::fprintf(stderr, "usage: calibration_study example DIR | recovery | direct | coverage | unloading [DIR]\n");
+  std::fprintf(stderr, "usage: calibration_study example DIR | compression DIR | recovery | direct | coverage | unloading [DIR]\n");
   return 2;
 }
