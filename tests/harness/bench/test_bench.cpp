@@ -140,7 +140,7 @@ TEST_CASE("the quick run wrote every file, and each is well formed", "[bench]") 
     paths.insert(r.path);
     labels.insert(r.scheme + std::to_string(r.stol));
   }
-  // 11 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
+  // 12 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
   // 5 STOLs, implicit), 3 h.
   const size_t n_paths = MJ_BENCH_QUICK_PATH_COUNT;
   CHECK(paths.size() == n_paths);
@@ -318,7 +318,8 @@ std::vector<Vec3> corner_tractions(const std::string& id) {
   const BenchPath* path = &chosen.front();
   REQUIRE(path->id == id);
   const std::vector<Vec3> history = discretise(*path, 1e-4);
-  const Trajectory t = drive_point(path->parameters, path->directions, SchemeControls{}, history, 1, 60, false);
+  const Trajectory t =
+      drive_point(path->parameters, path->cap, path->directions, SchemeControls{}, history, 1, 60, false);
   REQUIRE(t.complete(static_cast<long>(history.size()) - 1));
   std::vector<Vec3> corners;
   size_t i = 0;
