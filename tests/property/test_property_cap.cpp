@@ -9,7 +9,7 @@
 //     decreasing. wII (SDV 8) is counted, not asserted: with the cap on it
 //     decreases on closed, crushed joints (measured 2026-12-06, double: 1662
 //     of 38400 point-increments of modified Euler, 169 of 9600 of backward
-//     Euler; e.g. 0.229984 -> 0.229930 N/mm over a few increments; Eq. 8's
+//     Euler; e.g. 0.229984 -> 0.229930 N/mm over a few increments; presumably Eq. 8's
 //     |tau| - <-sigma_n> tan(phi) < 0 where the cap holds the traction below
 //     the friction line): to be settled in the law, issue 35;
 //   - on or inside Eq. 2 within 10 x FTOL (the schemes with a drift
