@@ -195,8 +195,8 @@ std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
 }
 
 // Crushing (docs/model.md 12), the splitting tests' crush family
-// (tests/support/splitting_paths.hpp) with its cap rule: Cs = 9, fc four
-// times the bound of fc/3 > sqrt(ft0^2 + Cs c0^2), Gfc twice its snap-back
+// (tests/support/splitting_paths.hpp) with its cap rule: Cs = 9,
+// fc = 4 sqrt(ft0^2 + Cs c0^2) (the rule: fc/3 above that root), Gfc twice its snap-back
 // bound, kappa_p = fc/kn. Pressed to 0.3 fc, slid onto the cap and along it
 // (its flow closes the joint, so the pressure falls) through the corner onto
 // the hyperbola; crushed past the peak with the slip held, the slip turned

@@ -3,8 +3,8 @@
 // parameter set without it, at a pressure where the capped point crushes.
 //
 // The Almeida M15 set, and with it the cap of the splitting tests' crush
-// family (tests/support/splitting_paths.hpp, crush_cap): Cs = 9, fc four
-// times the bound of fc/3 > sqrt(ft0^2 + Cs c0^2) (32.8 MPa), Gfc twice its
+// family (tests/support/splitting_paths.hpp, crush_cap): Cs = 9,
+// fc = 4 sqrt(ft0^2 + Cs c0^2) = 32.8 MPa (the rule: fc/3 above that root), Gfc twice its
 // snap-back bound, kappa_p = fc/kn. Every point is pressed to 0.3 fc
 // (9.8 MPa on the undamaged joint) and slides by 1e-5 mm per increment:
 // - no cap: on the residual hyperbola, after 1 mm of slip;
