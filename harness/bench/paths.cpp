@@ -211,8 +211,8 @@ BenchPath crush_path(const Parameters& p) {
   const double e0 = p.ft0 / p.kn, a = -0.3 * c.fc / p.kn, soft = c.kappa_p + 2 * c.Gfc / c.fc;
   const double s = 3 * c.fc / p.ks, b = -(c.fc / p.kn + soft);
   BenchPath path{"crush", "crushing: slid along the cap, through the corner, crushed, reversed, opened, reclosed", p,
-                 3, straight_legs({{a, 0, 0}, {a, s, 0}, {b, s, 0}, {b, -s, s}, {2 * e0, -s, s}, {b - 0.5 * soft, 0, 0}})};
-  path.cap = c;
+                 3, straight_legs({{a, 0, 0}, {a, s, 0}, {b, s, 0}, {b, -s, s}, {2 * e0, -s, s}, {b - 0.5 * soft, 0, 0}}),
+                 c};
   return path;
 }
 
@@ -220,7 +220,7 @@ void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths)
   const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
   // A path given directly as its legs, on these parameters.
   auto given = [&p](const char* id, const char* title, std::vector<std::vector<Vec3>> legs) {
-    return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs}; }};
+    return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs, CompressionCap{}}; }};
   };
   // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
   // tangential directions while open, closing into compression, then shear
