@@ -193,7 +193,7 @@ void check_scheme(mortar::Scheme scheme, int sets, unsigned seed) {
 
 }  // namespace
 
-TEST_CASE("Property (cap): finite, damage, works and kappa_c never decreasing, on or inside Eq. 2 and the cap "
+TEST_CASE("Property (cap): finite, damage, wI, wIII and kappa_c never decreasing, on or inside Eq. 2 and the cap "
           "(random sets and caps, 16 paths each, the three schemes)",
           "[property][cap]") {
   SECTION("modified Euler") { check_scheme(mortar::Scheme::modified_euler, scaled(40), 20261206); }
