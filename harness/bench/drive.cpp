@@ -16,11 +16,11 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-AbiSetup setup_for(const Parameters& p, int n_dir, const SchemeControls& c) {
+AbiSetup setup_for(const Parameters& p, const CompressionCap& cap, int n_dir, const SchemeControls& c) {
   AbiSetup s;
   s.n_dir = n_dir;
-  s.n_states = kStateCount;
-  s.props = bench_props(p, c);
+  s.n_states = cap.on() ? kCappedStateCountDouble : kStateCount;
+  s.props = bench_props(p, c, cap);
   s.stiffness_default = p.kn;
   return s;
 }
@@ -29,8 +29,10 @@ AbiSetup setup_for(const Parameters& p, int n_dir, const SchemeControls& c) {
 Model model_for(const std::vector<double>& props) {
   Parameters p;
   Controls c;
+  CompressionCap cap;
   read_props(props.data(), static_cast<int>(props.size()), p, c);
-  return make_model(p, c);
+  read_cap(props.data(), static_cast<int>(props.size()), p, cap);
+  return make_model(p, c, cap);
 }
 
 // The call arguments of one increment from `from` to `to` (law signs): the
@@ -74,14 +76,14 @@ double surface_ratio(const Model& M, const AbiBlock& abi, const Vec3& sigma) {
 
 Snapshot snapshot_of(AbiBlock& abi, int k) {
   Snapshot s;
-  std::copy_n(abi.state(k), kStateCount, s.state.begin());
+  std::copy_n(abi.state(k), abi.n_states(), s.state.begin());
   std::copy_n(abi.stress(k), abi.n_dir(), s.stress.begin());
   s.sed = abi.sed(k);
   return s;
 }
 
 void restore(AbiBlock& abi, int k, const Snapshot& s) {
-  std::copy_n(s.state.begin(), kStateCount, abi.state(k));
+  std::copy_n(s.state.begin(), abi.n_states(), abi.state(k));
   std::copy_n(s.stress.begin(), abi.n_dir(), abi.stress(k));
   abi.sed(k) = s.sed;
 }
@@ -92,7 +94,7 @@ constexpr double kNoContactOpening = 1e36;
 
 }  // namespace
 
-std::vector<double> bench_props(const Parameters& p, const SchemeControls& c) {
+std::vector<double> bench_props(const Parameters& p, const SchemeControls& c, const CompressionCap& cap) {
   Controls controls;
   controls.scheme = c.scheme;
   if (c.stol != 0) controls.stol = c.stol;
@@ -100,13 +102,18 @@ std::vector<double> bench_props(const Parameters& p, const SchemeControls& c) {
   if (c.max_substeps != 0) controls.max_substeps = static_cast<int>(c.max_substeps);
   if (c.min_substep != 0) controls.min_substep = c.min_substep;
   const auto props = to_props(p, controls);
-  return {props.begin(), props.end()};
+  std::vector<double> out(props.begin(), props.end());
+  if (cap.on()) {
+    out.resize(kCapFirstProp + kCapCount, 0.0);  // props(20) = 0: the adapters' default shear sign
+    for (int i = 0; i < kCapCount; ++i) out[static_cast<size_t>(kCapFirstProp + i)] = cap_parameter_at(cap, i);
+  }
+  return out;
 }
 
-Trajectory drive_point(const Parameters& p, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
+Trajectory drive_point(const Parameters& p, const CompressionCap& cap, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
                        int split, double budget_seconds, bool check_surface,
                        const std::vector<long>& checkpoints) {
-  const AbiSetup setup = setup_for(p, n_dir, c);
+  const AbiSetup setup = setup_for(p, cap, n_dir, c);
   const Model M = model_for(setup.props);
   AbiBlock abi(setup, 1, 0);
   Trajectory t;
@@ -177,7 +184,7 @@ TimingWindows timing_windows(long increments, int max_points) {
   return w;
 }
 
-Timing time_history(const Parameters& p, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
+Timing time_history(const Parameters& p, const CompressionCap& cap, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
                     const TimingWindows& windows, const std::vector<Snapshot>& snapshots, int repeats) {
   const int P = windows.points();
   const long W = windows.length();
@@ -192,7 +199,7 @@ Timing time_history(const Parameters& p, int n_dir, const SchemeControls& c, con
     }
   std::vector<CallTime> infos(static_cast<size_t>(W));
   for (long w = 0; w < W; ++w) infos[w] = call_info(w + 1, W);
-  AbiBlock abi(setup_for(p, n_dir, c), P, 0);
+  AbiBlock abi(setup_for(p, cap, n_dir, c), P, 0);
   std::vector<double> ns(static_cast<size_t>(repeats));
   Timing t;
   t.points = P;
@@ -213,8 +220,8 @@ Timing time_history(const Parameters& p, int n_dir, const SchemeControls& c, con
     if (r == 0) {
       t.reproduced = true;
       for (int k = 0; k < P; ++k)
-        t.reproduced = t.reproduced && std::equal(snapshots[k + 1].state.begin(), snapshots[k + 1].state.end(),
-                                                  abi.state(k));
+        t.reproduced = t.reproduced && std::equal(snapshots[k + 1].state.begin(),
+                                                  snapshots[k + 1].state.begin() + abi.n_states(), abi.state(k));
     }
   }
   std::sort(ns.begin(), ns.end());

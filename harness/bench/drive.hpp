@@ -27,12 +27,15 @@ struct SchemeControls {
   double min_substep = 0;   // props(19)
 };
 
-std::vector<double> bench_props(const Parameters& p, const SchemeControls& c);
+// props(1..19), and with cap.on() props(20) = 0 and the cap in props(21..24).
+std::vector<double> bench_props(const Parameters& p, const SchemeControls& c,
+                                const CompressionCap& cap = CompressionCap{});
 
 // What the solver holds for a point between increments: its state, stress
-// and sed arrays (Abaqus layout and signs).
+// and sed arrays (Abaqus layout and signs). DEPVAR is kStateCount, or with a
+// cap kCappedStateCountDouble (SDV 36 holds kappa_c); the slots past it stay 0.
 struct Snapshot {
-  std::array<double, kStateCount> state{};
+  std::array<double, kCappedStateCountDouble> state{};
   std::array<double, 3> stress{};
   double sed = 0;
 };
@@ -60,12 +63,13 @@ struct Trajectory {
 // Drives one point along `history` (history[0] is the origin, the reference
 // call). Each history increment is split into `split` equal calls (a finer
 // run along the same path; records are kept at the history's points only).
-// `check_surface` computes the drift (costly; the references skip it). Stops
+// `check_surface` computes the drift (costly; the references skip it): Eq. 2
+// only, not the cap's surface, whose strength the law's headers do not expose. Stops
 // at the first failed increment, at a non-finite output, or when
 // `budget_seconds` of wall time are spent. The snapshots after the
 // increments listed in `checkpoints` (ascending; 0 = after the reference
 // call) are kept in Trajectory::snapshots.
-Trajectory drive_point(const Parameters& p, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
+Trajectory drive_point(const Parameters& p, const CompressionCap& cap, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
                        int split, double budget_seconds, bool check_surface,
                        const std::vector<long>& checkpoints = {});
 
@@ -96,7 +100,7 @@ struct Timing {
 // surface" penetration (the routine returns at once; not counted as an
 // update). The timed loop only writes the call's penetration and slip
 // increments and calls the routine; nothing is allocated in it.
-Timing time_history(const Parameters& p, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
+Timing time_history(const Parameters& p, const CompressionCap& cap, int n_dir, const SchemeControls& c, const std::vector<Vec3>& history,
                     const TimingWindows& windows, const std::vector<Snapshot>& snapshots, int repeats);
 
 }  // namespace mortar::harness

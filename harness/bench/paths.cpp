@@ -194,11 +194,33 @@ std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
   return straight_legs(corners);
 }
 
+// Crushing (docs/model.md 12), the splitting tests' crush family
+// (tests/support/splitting_paths.hpp) with its cap rule: Cs = 9,
+// fc = 4 sqrt(ft0^2 + Cs c0^2) (the rule: fc/3 above that root), Gfc twice its snap-back
+// bound, kappa_p = fc/kn. Pressed to 0.3 fc, slid onto the cap and along it
+// (its flow closes the joint, so the pressure falls) through the corner onto
+// the hyperbola; crushed past the peak with the slip held, the slip turned
+// and reversed, opened, then closed and pressed onto the softened cap.
+CompressionCap crush_cap(const Parameters& p) {
+  const double Cs = 9, fc = 4 * std::sqrt(p.ft0 * p.ft0 + Cs * p.c0 * p.c0);
+  const double Gfc = 2 * 481 * fc * fc / (588 * std::min(p.kn, Cs * p.ks));
+  return {fc, Cs, Gfc, fc / p.kn};
+}
+BenchPath crush_path(const Parameters& p) {
+  const CompressionCap c = crush_cap(p);
+  const double e0 = p.ft0 / p.kn, a = -0.3 * c.fc / p.kn, soft = c.kappa_p + 2 * c.Gfc / c.fc;
+  const double s = 3 * c.fc / p.ks, b = -(c.fc / p.kn + soft);
+  BenchPath path{"crush", "crushing: slid along the cap, through the corner, crushed, reversed, opened, reclosed", p,
+                 3, straight_legs({{a, 0, 0}, {a, s, 0}, {b, s, 0}, {b, -s, s}, {2 * e0, -s, s}, {b - 0.5 * soft, 0, 0}}),
+                 c};
+  return path;
+}
+
 void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths) {
   const Parameters p = read_parameter_file(data_dir + "/vdp_monotonic_shear/params_sn0.5.toml").values;
   // A path given directly as its legs, on these parameters.
   auto given = [&p](const char* id, const char* title, std::vector<std::vector<Vec3>> legs) {
-    return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs}; }};
+    return PathEntry{id, [=] { return BenchPath{id, title, p, 3, legs, CompressionCap{}}; }};
   };
   // Opening past the tensile peak (ft0/kn = 0.003 mm), shear in both
   // tangential directions while open, closing into compression, then shear
@@ -233,6 +255,7 @@ void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths)
   paths.push_back(given("rocking", "rocking toe: separated, closed, slid, reopened, three times", rocking_legs(p)));
   paths.push_back(given("cap_reversal", "opening and softening on the tension cap with slip reversals",
                         cap_reversal_legs(p)));
+  paths.push_back({"crush", [p] { return crush_path(p); }});
 }
 
 }  // namespace

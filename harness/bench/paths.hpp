@@ -16,6 +16,8 @@
 // - Mixed paths that stress the methods, given directly as corner points
 //   (with the van der Pluijm -0.5 MPa parameters), and a cyclic shear with
 //   reversals at three normal stresses, again from a mixed-control run.
+// - crush: the one path with the compression cap on (docs/model.md 12), the
+//   splitting tests' crush family on the same parameters.
 #pragma once
 
 #include <string>
@@ -37,6 +39,7 @@ struct BenchPath {
   // Legs of the history; legs[i] is a polyline whose first point is the last
   // point of legs[i-1] (the origin for the first leg).
   std::vector<std::vector<Vec3>> legs;
+  CompressionCap cap;  // off (fc = 0) but on the crush path
 };
 
 // The separations at the end of the increments of size at most h [mm]

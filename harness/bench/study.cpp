@@ -167,10 +167,11 @@ class Study {
     const long n = static_cast<long>(history.size()) - 1;
     // Not --budget: a reference that cannot finish is a failure of the study.
     const double budget = kReferenceBudgetSeconds;
-    Trajectory ref = drive_point(path.parameters, path.directions, reference_controls(rs.stol, rs.ftol), history,
-                                 split, budget, false);
-    const Trajectory check = drive_point(path.parameters, path.directions, reference_controls(rs.check_stol, rs.check_ftol), history,
-                                         rs.check_split_factor * split, budget, false);
+    Trajectory ref = drive_point(path.parameters, path.cap, path.directions, reference_controls(rs.stol, rs.ftol),
+                                 history, split, budget, false);
+    const Trajectory check =
+        drive_point(path.parameters, path.cap, path.directions, reference_controls(rs.check_stol, rs.check_ftol),
+                    history, rs.check_split_factor * split, budget, false);
     for (const Trajectory* t : {static_cast<const Trajectory*>(&ref), &check})
       if (!t->complete(n))
         throw std::runtime_error("bench: the reference of path " + path.id + " at h = " + format_number(h, 3) +
@@ -196,8 +197,8 @@ class Study {
     row.h = h;
     row.increments = static_cast<long>(history.size()) - 1;
     const TimingWindows windows = timing_windows(row.increments, kBlockPoints);
-    const Trajectory t = drive_point(path.parameters, path.directions, s.controls, history, 1, o_.budget_seconds,
-                                     true, windows.start);
+    const Trajectory t = drive_point(path.parameters, path.cap, path.directions, s.controls, history, 1,
+                                     o_.budget_seconds, true, windows.start);
     row.seconds = t.seconds;
     row.drift = t.drift;
     row.drifted_increments = t.drifted_increments;
@@ -219,7 +220,8 @@ class Study {
     // Long sweeps vary little between repeats; three give the median and spread.
     const int min_repeats = sweep > 0.1 ? std::min(3, policy_.min_repeats) : policy_.min_repeats;
     const int repeats = std::clamp(static_cast<int>(policy_.seconds / sweep), min_repeats, policy_.max_repeats);
-    return time_history(path.parameters, path.directions, s.controls, history, windows, t.snapshots, repeats);
+    return time_history(path.parameters, path.cap, path.directions, s.controls, history, windows, t.snapshots,
+                        repeats);
   }
 
   const BenchOptions& o_;

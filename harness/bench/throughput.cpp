@@ -352,6 +352,7 @@ ThroughputResult run_throughput(const ThroughputOptions& o, std::ostream& err) {
   run_cases(cases, o, r, err);
   r.host_chain_scaling = host_thread_scaling(&arithmetic_chains, r.repeats, seconds);
   r.host_port_scaling = host_thread_scaling(&independent_additions, r.repeats, seconds);
+  run_cap_throughput(p, o, seconds, r, err);
   return r;
 }
 

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "mortar/parameters.hpp"
+
 namespace mortar::harness {
 
 struct ThroughputOptions {
@@ -51,6 +53,26 @@ struct ThroughputRow {
 // drifts by tens of percent within a run.
 double paired_ratio(const std::vector<double>& a, const std::vector<double>& b);
 
+// The compression cap's rows (bench/throughput_cap.cpp): sliding by 1e-5 mm
+// per increment at a pressure of 0.3 fc, on the residual hyperbola without
+// the cap and with it (inside the cap), and crushing along the cap.
+enum class CapWorkload { sliding_no_cap, sliding_inside_cap, crushing };
+inline constexpr int kCapWorkloadCount = 3;
+inline constexpr int kCapBlockPoints = 256;  // two blocks
+inline constexpr CapWorkload kCapWorkloads[] = {CapWorkload::sliding_no_cap, CapWorkload::sliding_inside_cap,
+                                                CapWorkload::crushing};
+const char* cap_workload_name(CapWorkload w);
+// The cap of those rows for set p: the rule of the splitting tests' crush_cap.
+CompressionCap throughput_cap(const Parameters& p);
+
+// One precision, one thread, in cache: median ns per point-update and each
+// repeat's sample, by CapWorkload.
+struct CapRow {
+  bool single = false;
+  double ns[kCapWorkloadCount] = {};
+  std::vector<double> samples[kCapWorkloadCount];
+};
+
 struct ThroughputResult {
   int block = 0, repeats = 0;
   long points_out_of_cache = 0;
@@ -66,7 +88,14 @@ struct ThroughputResult {
   //     than 1.
   double host_chain_scaling = 0;  // chains
   double host_port_scaling = 0;   // ports
+  CompressionCap cap;              // the cap's rows: its parameters,
+  double cap_pressure = 0;         // the pressure [MPa],
+  std::vector<CapRow> cap_rows;    // double, then single
 };
+
+// Runs the cap's rows onto r (r.repeats samples of about `seconds` each).
+void run_cap_throughput(const Parameters& p, const ThroughputOptions& o, double seconds, ThroughputResult& r,
+                        std::ostream& err);
 
 // Runs every case; std::runtime_error when a routine call fails or a
 // workload leaves its regime (an elastic update that dissipates, a plastic

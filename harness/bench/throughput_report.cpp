@@ -75,6 +75,22 @@ std::string throughput_report(const ThroughputResult& r) {
     << verdict(worst_threads >= 1.8) << "; this host's own 2-thread scaling (arithmetic sharing nothing, "
     << "median of " << r.repeats << "): " << fixed(r.host_chain_scaling, 2) << " for dependent multiply-add chains, "
     << fixed(r.host_port_scaling, 2) << " for independent additions (port-bound)\n";
+  if (r.cap_rows.empty()) return o.str();
+  // The cap's rows: each capped workload against the uncapped sliding, paired.
+  auto cap_ratio = [](const CapRow& row, CapWorkload a) {
+    return paired_ratio(row.samples[int(a)], row.samples[int(CapWorkload::sliding_no_cap)]);
+  };
+  o << "\nthe compression cap (fc = " << fixed(r.cap.fc, 1) << " MPa, Cs = " << fixed(r.cap.Cs, 0)
+    << "): sliding at 1e-5 mm per increment, pressed to " << fixed(r.cap_pressure, 1)
+    << " MPa, 1 thread, " << kCapBlockPoints << " points in cache\n\n| precision";
+  for (const CapWorkload w : kCapWorkloads) o << " | " << cap_workload_name(w);
+  o << " | inside the cap / no cap | crushing / no cap |\n|---|---|---|---|---|---|\n";
+  for (const CapRow& row : r.cap_rows) {
+    o << "| " << (row.single ? "single" : "double");
+    for (const CapWorkload w : kCapWorkloads) o << " | " << fixed(row.ns[int(w)], 1);
+    o << " | " << fixed(cap_ratio(row, CapWorkload::sliding_inside_cap), 2) << " | "
+      << fixed(cap_ratio(row, CapWorkload::crushing), 2) << " |\n";
+  }
   return o.str();
 }
 

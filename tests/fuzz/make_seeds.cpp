@@ -143,6 +143,36 @@ int main(int argc, char** argv) {
     path_seed("corrupt-pair-low-part", c, pressed_shear(8, -0.001, 0.004), corr);
   }
 
+  // --- The compression cap (docs/model.md 12): props(21..24) as raw doubles
+  // (props mode 2) on Almeida M15, DEPVAR 37 (the single-precision float
+  // pair; the double routine keeps SDV 36). Cs = 1, fc = 4 sqrt(ft0^2 + Cs
+  // c0^2) = 12.8 MPa (its cap fc/3 at 0.0058 mm of closure), Gfc twice its
+  // snap-back bound, kappa_p = fc/kn: pressed onto the cap, crushed while
+  // sliding, opened and reclosed.
+  {
+    const double m15[14] = {741.1, 308.8, 1.78, 2.67, 0.01209, 0.121, 40, 32, 511.9, 8, 0, 856.1, 10, 3};
+    const double fc = 4 * std::sqrt(1.78 * 1.78 + 2.67 * 2.67), Gfc = 2 * 481 * fc * fc / (588 * 308.8);
+    auto capped = [&](double fc_, double Cs, double Gfc_, double kappa_p, int states, int block) {
+      Case c;
+      c.props_mode = 2;
+      c.n_props = 24;
+      c.n_states = states;
+      c.n_block = block;
+      c.raw_props.assign(m15, m15 + 14);
+      c.raw_props.resize(20, 0.0);
+      for (double v : {fc_, Cs, Gfc_, kappa_p}) c.raw_props.push_back(v);
+      return c;
+    };
+    const std::vector<Step> crush = {{0, 0, 0},       {0.008, 0, 0},   {0.008, 0.002, 0}, {0.006, 0.004, 0.002},
+                                     {0, 0.004, 0},   {-0.01, 0, 0},   {0.01, -0.004, 0}, {0.01, 0.002, 0}};
+    path_seed("valid-cap-37-states-crush", capped(fc, 1, Gfc, fc / 741.1, 37, 1), crush);
+    path_seed("valid-cap-37-states-4-points-crush", capped(fc, 1, Gfc, 0, 37, 4), crush);
+    path_seed("valid-cap-36-states-crush", capped(fc, 1, Gfc, fc / 741.1, 36, 2), crush);  // single: too few
+    path_seed("valid-cap-fc-0-no-cap", capped(0, 0, 0, 0, 37, 1), crush);
+    path_seed("invalid-cap-fc-below-rule", capped(0.5 * fc, 1, Gfc, 0, 37, 1), crush);      // fc/3 too small
+    path_seed("invalid-cap-gfc-snap-back", capped(fc, 1, 0.1 * Gfc, 0, 37, 1), crush);
+  }
+
   // --- Invalid arguments: reported, outputs finite.
   for (int d : {1, 4, 0, -1, -4, 11}) {
     Case c;

@@ -33,23 +33,26 @@ constexpr bool kSingle = sizeof(Real) == sizeof(float);
 // The DEPVAR the blocks declare: single precision keeps its float pairs in
 // SDV 24-34 (docs/model.md 3).
 constexpr int kStates = kSingle ? mortar::kPairedStateCount : mortar::kStateCount;
+// With a compression cap: kappa_c in SDV 36 (double) or the float pair 36-37.
+constexpr int kCappedStates = kSingle ? mortar::kCappedStateCountSingle : mortar::kCappedStateCountDouble;
 
 // One VUINTERACTION block: nBlock points, one node state each.
 struct Block {
-  int n_block, n_dir, n_states = kStates, n_props;
+  int n_block, n_dir, n_states, n_props;
   std::vector<Real> stress, flux_slv, flux_mst, state, sed, sfd, scd, spd, svd;
   std::vector<Real> props, penetration, dr_disp;
   std::vector<int> slave_nodes;
 
-  Block(int block, int dir, std::vector<Real> p)
-      : n_block(block), n_dir(dir), n_props(int(p.size())), stress(size_t(dir) * block), flux_slv(block),
-        flux_mst(block), state(size_t(kStates) * block), sed(block), sfd(block), scd(block), spd(block),
+  // `states`: DEPVAR, kStates or more (a capped deck: kCappedStates).
+  Block(int block, int dir, std::vector<Real> p, int states = kStates)
+      : n_block(block), n_dir(dir), n_states(states), n_props(int(p.size())), stress(size_t(dir) * block),
+        flux_slv(block), flux_mst(block), state(size_t(states) * block), sed(block), sfd(block), scd(block), spd(block),
         svd(block), props(std::move(p)), penetration(block), dr_disp(size_t(dir) * block), slave_nodes(block) {
     for (int k = 0; k < block; ++k) slave_nodes[k] = 1001 + k;
   }
 
-  Real* state_of(int k) { return &state[size_t(k) * kStates]; }
-  const Real* state_of(int k) const { return &state[size_t(k) * kStates]; }
+  Real* state_of(int k) { return &state[size_t(k) * n_states]; }
+  const Real* state_of(int k) const { return &state[size_t(k) * n_states]; }
   Real* stress_of(int k) { return &stress[size_t(k) * n_dir]; }
   const Real* stress_of(int k) const { return &stress[size_t(k) * n_dir]; }
 

@@ -140,7 +140,7 @@ TEST_CASE("the quick run wrote every file, and each is well formed", "[bench]") 
     paths.insert(r.path);
     labels.insert(r.scheme + std::to_string(r.stol));
   }
-  // 11 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
+  // 12 paths (no Atkinson in quick; 1 in sanitizer builds), 7 schemes (FE,
   // 5 STOLs, implicit), 3 h.
   const size_t n_paths = MJ_BENCH_QUICK_PATH_COUNT;
   CHECK(paths.size() == n_paths);
@@ -318,7 +318,8 @@ std::vector<Vec3> corner_tractions(const std::string& id) {
   const BenchPath* path = &chosen.front();
   REQUIRE(path->id == id);
   const std::vector<Vec3> history = discretise(*path, 1e-4);
-  const Trajectory t = drive_point(path->parameters, path->directions, SchemeControls{}, history, 1, 60, false);
+  const Trajectory t =
+      drive_point(path->parameters, path->cap, path->directions, SchemeControls{}, history, 1, 60, false);
   REQUIRE(t.complete(static_cast<long>(history.size()) - 1));
   std::vector<Vec3> corners;
   size_t i = 0;
@@ -356,6 +357,36 @@ TEST_CASE("cap_reversal: the shear reverses at every corner, on the tension cap,
     CHECK(c[k][1] * (k % 2 ? -1 : 1) > 0.01);     // tau follows the slip's sign, strength left
     if (k < 4) CHECK(c[k][0] > 0.01);             // the first four on the cap
   }
+}
+
+TEST_CASE("crush: the cap on, crushed past its peak fc, opened and reclosed", "[bench]") {
+  const std::vector<BenchPath> chosen = bench_paths(MJ_CALIBRATION_DATA_DIR, true, {"crush"});
+  REQUIRE(chosen.size() == 1);
+  const BenchPath& path = chosen.front();
+  REQUIRE(path.cap.on());
+  const double fc = path.cap.fc, Cs = path.cap.Cs;
+  const std::vector<Vec3> history = discretise(path, 1e-4);
+  const long n = static_cast<long>(history.size()) - 1;
+  const Trajectory t = drive_point(path.parameters, path.cap, path.directions, SchemeControls{}, history, 1, 60,
+                                   false, {n});
+  REQUIRE(t.complete(n));
+  // The cap's measure sqrt(sigma_n^2 + Cs tau^2) reaches fc (the peak, at a
+  // slope of zero, so within the increments' sampling) and never exceeds it.
+  double most = 0;
+  for (const Vec3& x : t.traction) most = std::max(most, std::sqrt(x[0] * x[0] + Cs * (x[1] * x[1] + x[2] * x[2])));
+  CHECK(most > 0.99 * fc);
+  CHECK(most < fc * (1 + 1e-6));
+  // Crushed past the peak: SDV 36 (kappa_c) beyond kappa_p at the end.
+  REQUIRE(t.snapshots.size() == 1);
+  CHECK(t.snapshots[0].state[cap_slot::kappa_c] > path.cap.kappa_p);
+  // The corners: pressed to 0.3 fc; opened to zero traction; reclosed under
+  // pressure, inside the peak.
+  const std::vector<Vec3> c = corner_tractions("crush");
+  REQUIRE(c.size() == 6);
+  CHECK(c[0][0] == Approx(-0.3 * fc).epsilon(1e-9));
+  CHECK(c[4].norm() == 0);
+  CHECK(c[5][0] < 0);
+  CHECK(-c[5][0] < fc);
 }
 
 TEST_CASE("throughput ratios pair the samples of one repeat", "[bench]") {
