@@ -180,4 +180,36 @@ inline bool all_finite(const Real* v, size_t n) {
   return std::all_of(v, v + n, [](Real x) { return std::isfinite(double(x)); });
 }
 
+// Energy closure per point of a block. W_ext = sum 1/2 (sigma_old +
+// sigma_new) . d_delta in law signs. The trapezoid is exact for a traction
+// linear in the increment; for a traction monotone along each component of
+// an increment its error is at most 1/2 |d_sigma_i| |d_delta_i| per
+// component: `bound` sums that. A traction that drops at fixed separation
+// (snap-back, closure jump) is the case the bound is made for; the law's own
+// energy identity is tested at the law level (tests/law/test_energy.cpp).
+struct EnergyBooks {
+  std::vector<double> work, work_abs, bound;
+  explicit EnergyBooks(int points) : work(size_t(points), 0.0), work_abs(size_t(points), 0.0), bound(size_t(points), 0.0) {}
+  void add(int k, const mortar::Vec3& sigma_old, const mortar::Vec3& sigma, const mortar::Vec3& d_sep) {
+    const double dw = 0.5 * (sigma_old + sigma).dot(d_sep);
+    work[size_t(k)] += dw;
+    work_abs[size_t(k)] += std::abs(dw);
+    bound[size_t(k)] += 0.5 * (sigma - sigma_old).cwiseAbs().dot(d_sep.cwiseAbs());
+  }
+  // |W_ext - booked| with booked = sed + SDV 16 + 17 + 18.
+  double error(const Block& b, int k) const {
+    const Real* st = b.state_of(k);
+    const double booked = double(b.sed[size_t(k)]) + double(st[slot::dissipation_plastic]) +
+                          double(st[slot::dissipation_damage]) + double(st[slot::energy_unilateral]);
+    return std::abs(work[size_t(k)] - booked);
+  }
+  // That error against sum |dW_ext|, and against the trapezoid's bound (0
+  // where it is round-off: within 1e-12 of sum |dW_ext|).
+  double relative(const Block& b, int k) const { return error(b, k) / std::max(work_abs[size_t(k)], 1e-300); }
+  double vs_bound(const Block& b, int k) const {
+    const double e = error(b, k);
+    return e <= 1e-12 * work_abs[size_t(k)] ? 0.0 : e / bound[size_t(k)];
+  }
+};
+
 }  // namespace mj_property

@@ -41,14 +41,7 @@ struct Tally {
 // Runs `points` random paths (one per point of one block) of `increments`
 // increments for one parameter set, each increment optionally cut into
 // `split` equal calls, and checks every property after every call.
-//
-// Energy: W_ext = sum 1/2 (sigma_old + sigma_new) . d_delta in law signs. The
-// trapezoid is exact for a traction linear in the increment; for a traction
-// monotone along each component of an increment its error is at most
-// 1/2 |d_sigma_i| |d_delta_i| per component: `bound` sums that. A traction
-// that drops at fixed separation (snap-back, closure jump) is the case the
-// bound is made for; the law's own energy identity is tested at the law level
-// (tests/law/test_energy.cpp).
+// Energy closure: EnergyBooks (abi_block.hpp).
 void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int points, int increments, bool modest,
              std::mt19937& rng, Tally& t, int split = 1) {
   const std::vector<Real> props = props_of(p, scheme);
@@ -60,7 +53,7 @@ void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int 
     b.penetration[k] = uniform(rng, -1e-3, 1e-3);  // the reference: wherever the point is first seen
   }
   b.call();  // the first call defines the zero of every point
-  std::vector<double> work(points, 0.0), work_abs(points, 0.0), bound(points, 0.0);
+  EnergyBooks books(points);
   std::vector<Step> steps(points);
   std::vector<mortar::Vec3> sigma_old(points), d_sep(points);
   std::vector<mortar::State> state_old(points);
@@ -110,19 +103,12 @@ void run_set(const mortar::Parameters& p, mortar::Scheme scheme, int n_dir, int 
         t.worst_yield_ratio = std::max(t.worst_yield_ratio, ratio);
         if (ratio > 10) ++t.off_surface;
       }
-      const double dw = 0.5 * (sigma_old[k] + sigma).dot(d_sep[k]);
-      work[k] += dw;
-      work_abs[k] += std::abs(dw);
-      bound[k] += 0.5 * (sigma - sigma_old[k]).cwiseAbs().dot(d_sep[k].cwiseAbs());
+      books.add(k, sigma_old[k], sigma, d_sep[k]);
     }
   }
   for (int k = 0; k < points; ++k) {
-    const Real* st = b.state_of(k);
-    const double booked = double(b.sed[k]) + double(st[slot::dissipation_plastic]) +
-                          double(st[slot::dissipation_damage]) + double(st[slot::energy_unilateral]);
-    const double error = std::abs(work[k] - booked);
-    t.closure.push_back(error / std::max(work_abs[k], 1e-300));
-    t.vs_bound.push_back(error <= 1e-12 * work_abs[k] ? 0.0 : error / bound[k]);
+    t.closure.push_back(books.relative(b, k));
+    t.vs_bound.push_back(books.vs_bound(b, k));
     ++t.paths;
   }
 }
