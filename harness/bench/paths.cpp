@@ -195,17 +195,11 @@ std::vector<std::vector<Vec3>> cap_reversal_legs(const Parameters& p) {
 }
 
 // Crushing (docs/model.md 12), the splitting tests' crush family
-// (tests/support/splitting_paths.hpp) with its cap rule: Cs = 9,
-// fc = 4 sqrt(ft0^2 + Cs c0^2) (the rule: fc/3 above that root), Gfc twice its snap-back
-// bound, kappa_p = fc/kn. Pressed to 0.3 fc, slid onto the cap and along it
-// (its flow closes the joint, so the pressure falls) through the corner onto
-// the hyperbola; crushed past the peak with the slip held, the slip turned
-// and reversed, opened, then closed and pressed onto the softened cap.
-CompressionCap crush_cap(const Parameters& p) {
-  const double Cs = 9, fc = 4 * std::sqrt(p.ft0 * p.ft0 + Cs * p.c0 * p.c0);
-  const double Gfc = 2 * 481 * fc * fc / (588 * std::min(p.kn, Cs * p.ks));
-  return {fc, Cs, Gfc, fc / p.kn};
-}
+// (tests/support/splitting_paths.hpp) with its cap (crush_cap). Pressed to
+// 0.3 fc, slid onto the cap and along it (its flow closes the joint, so the
+// pressure falls) through the corner onto the hyperbola; crushed past the
+// peak with the slip held, the slip turned and reversed, opened, then closed
+// and pressed onto the softened cap.
 BenchPath crush_path(const Parameters& p) {
   const CompressionCap c = crush_cap(p);
   const double e0 = p.ft0 / p.kn, a = -0.3 * c.fc / p.kn, soft = c.kappa_p + 2 * c.Gfc / c.fc;
@@ -259,6 +253,12 @@ void add_mixed_paths(const std::string& data_dir, std::vector<PathEntry>& paths)
 }
 
 }  // namespace
+
+CompressionCap crush_cap(const Parameters& p) {
+  const double Cs = 9, fc = 4 * std::sqrt(p.ft0 * p.ft0 + Cs * p.c0 * p.c0);
+  const double Gfc = 2 * 481 * fc * fc / (588 * std::min(p.kn, Cs * p.ks));
+  return {fc, Cs, Gfc, fc / p.kn};
+}
 
 std::vector<Vec3> discretise(const BenchPath& path, double h) {
   std::vector<Vec3> points{Vec3::Zero()};

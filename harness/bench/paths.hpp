@@ -58,6 +58,12 @@ double path_length(const BenchPath& path);
 // path at three normal stresses stays). InputError for unreadable data or
 // an id that names no path (the message lists the ids); RunFailure if a
 // mixed-control run fails.
+// The cap of the crush path and of bench --throughput's cap rows for set p,
+// the rule of the splitting tests' crush family: Cs = 9, fc = 4 sqrt(ft0^2 +
+// Cs c0^2) (the rule: fc/3 above that root), Gfc twice its snap-back bound,
+// kappa_p = fc/kn.
+CompressionCap crush_cap(const Parameters& p);
+
 std::vector<BenchPath> bench_paths(const std::string& data_dir, bool quick, const std::vector<std::string>& ids = {});
 
 }  // namespace mortar::harness

@@ -62,8 +62,6 @@ inline constexpr int kCapBlockPoints = 256;  // two blocks
 inline constexpr CapWorkload kCapWorkloads[] = {CapWorkload::sliding_no_cap, CapWorkload::sliding_inside_cap,
                                                 CapWorkload::crushing};
 const char* cap_workload_name(CapWorkload w);
-// The cap of those rows for set p: the rule of the splitting tests' crush_cap.
-CompressionCap throughput_cap(const Parameters& p);
 
 // One precision, one thread, in cache: median ns per point-update and each
 // repeat's sample, by CapWorkload.

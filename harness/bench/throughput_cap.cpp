@@ -24,6 +24,7 @@
 #include <string>
 
 #include "bench/drive.hpp"
+#include "bench/paths.hpp"
 #include "bench/throughput.hpp"
 #include "bench/throughput_call.hpp"
 #include "bench/throughput_host.hpp"
@@ -38,12 +39,6 @@ const char* cap_workload_name(CapWorkload w) {
     case CapWorkload::crushing: return "sliding, crushing on the cap";
   }
   return "?";
-}
-
-CompressionCap throughput_cap(const Parameters& p) {
-  const double Cs = 9, fc = 4 * std::sqrt(p.ft0 * p.ft0 + Cs * p.c0 * p.c0);
-  const double Gfc = 2 * 481 * fc * fc / (588 * std::min(p.kn, Cs * p.ks));
-  return {fc, Cs, Gfc, fc / p.kn};
 }
 
 namespace {
@@ -152,7 +147,7 @@ CapRow run_cap_rows(CapCases<Real>& cases, double seconds, int repeats) {
 
 void run_cap_throughput(const Parameters& p, const ThroughputOptions& o, double seconds, ThroughputResult& r,
                         std::ostream& err) {
-  const CompressionCap cap = throughput_cap(p);
+  const CompressionCap cap = crush_cap(p);
   r.cap = cap;
   r.cap_pressure = kPressureOfFc * cap.fc;
   CapCases<double> doubles(double_precision_routine(), p, cap);
