@@ -148,7 +148,7 @@ class Builder {
         if (x1 - x0 <= eps || lo.body == up.body) continue;
         face_points(g_, x0, x1, s, area);
         for (size_t i = 0; i < s.size(); ++i)
-          m_.points.push_back({lo.body, up.body, s[i], k * bh_, 0.0, 1.0, area[i], true, m_.joint_faces});
+          m_.points.push_back({lo.body, up.body, s[i], k * bh_, 0.0, 1.0, area[i], true, m_.joint_faces, InterfaceRole::bed});
         ++m_.joint_faces;
       }
   }
@@ -161,7 +161,7 @@ class Builder {
       face_points(g_, c * bh_, (c + 1) * bh_, s, area);
       for (size_t i = 0; i < s.size(); ++i)
         m_.points.push_back(
-            {pieces[j].body, pieces[j + 1].body, pieces[j].x1, s[i], 1.0, 0.0, area[i], false, m_.joint_faces});
+            {pieces[j].body, pieces[j + 1].body, pieces[j].x1, s[i], 1.0, 0.0, area[i], false, m_.joint_faces, InterfaceRole::head});
       ++m_.joint_faces;
     }
   }
@@ -173,6 +173,15 @@ class Builder {
 };
 
 }  // namespace
+
+const char* role_name(InterfaceRole r) {
+  switch (r) {
+    case InterfaceRole::bed: return "bed joint";
+    case InterfaceRole::head: return "head joint";
+    case InterfaceRole::unit_crack: return "unit crack";
+  }
+  return "?";
+}
 
 std::vector<int> WallModel::base_points() const {
   std::vector<int> out;

@@ -18,6 +18,13 @@ namespace mortar::harness {
 enum class Bond { running, stack };
 enum class PointRule { trapezoid, midpoint };
 enum class BeamRotation { fixed, free };
+// What an interface is, each with its own joint law (scene file
+// [interfaces]): a bed joint (horizontal, the base and the top beam's
+// included), a head joint, or the potential crack through the middle of a
+// unit (a unit split into two rigid halves).
+enum class InterfaceRole { bed = 0, head = 1, unit_crack = 2 };
+constexpr int kInterfaceRoles = 3;
+const char* role_name(InterfaceRole r);
 
 struct WallGeometry {
   double unit_length = 0, unit_height = 0, unit_depth = 0;  // the unit itself [mm]
@@ -56,6 +63,7 @@ struct ContactPoint {
   double area = 0;        // tributary area [mm²]
   bool bed = true;        // bed (horizontal) or head (vertical) joint
   int joint = 0;          // which joint face (pictures: one segment each)
+  InterfaceRole role = InterfaceRole::bed;
   double tx() const { return ny; }
   double ty() const { return -nx; }
 };

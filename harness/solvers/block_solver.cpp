@@ -133,12 +133,14 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
                                 const std::function<void(long, long)>& progress,
                                 std::vector<WallSnapshot>* snapshots) {
   const auto clock_start = std::chrono::steady_clock::now();
-  AbiSetup setup;
-  setup.n_dir = 2;
-  setup.n_states = state_count_for(scene_.joint.cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
-  setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol, 0, scene_.joint.cap);
-  setup.stiffness_default = scene_.joint.values.kn;
-  JointCalls joints(model_, setup, options_.block, options_.threads);
+  std::vector<AbiSetup> setups(kInterfaceRoles);
+  for (AbiSetup& setup : setups) {
+    setup.n_dir = 2;
+    setup.n_states = state_count_for(scene_.joint.cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
+    setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol, 0, scene_.joint.cap);
+    setup.stiffness_default = scene_.joint.values.kn;
+  }
+  JointCalls joints(model_, setups, options_.block, options_.threads);
 
   const std::vector<double> ends = scene_.stage_ends();
   const std::vector<int> base = model_.base_points();

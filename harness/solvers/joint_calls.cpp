@@ -22,18 +22,36 @@ void point_displacement(const Body& b, const double* q, double x, double y, doub
 
 }  // namespace
 
-JointCalls::JointCalls(const WallModel& model, const AbiSetup& setup, int block, int threads)
-    : model_(model), block_size_(block), threads_(std::max(1, threads)) {
-  if (setup.n_dir != 2) throw std::invalid_argument("JointCalls: an in-plane wall has nDir = 2");
+JointCalls::JointCalls(const WallModel& model, const std::vector<AbiSetup>& setups, int block, int threads)
+    : model_(model), threads_(std::max(1, threads)) {
   const int n = static_cast<int>(model.points.size());
-  for (int first = 0; first < n; first += block) {
-    blocks_.emplace_back(setup, std::min(block, n - first), first);
-    AbiBlock& b = blocks_.back();
-    for (int k = 0; k < b.size(); ++k) {
-      const ContactPoint& p = model.points[first + k];
-      const double normal[2] = {p.nx, p.ny}, tangent[2] = {p.tx(), p.ty()}, x[2] = {p.x, p.y};
-      b.set_joint_point(k, p.area, normal, tangent, x);
+  block_of_.assign(n, 0);
+  slot_of_.assign(n, 0);
+  // The points of one role lie together (build_wall); each run of one role
+  // is cut into near-equal blocks, so that the node labels stay the points'
+  // numbers and threads get even shares.
+  for (int first = 0; first < n;) {
+    const InterfaceRole role = model.points[first].role;
+    int end = first;
+    while (end < n && model.points[end].role == role) ++end;
+    const auto r = static_cast<size_t>(role);
+    if (r >= setups.size() || setups[r].n_dir != 2)
+      throw std::invalid_argument(std::string("JointCalls: no in-plane (nDir = 2) setup for the ") + role_name(role) +
+                                  "s");
+    const int count = end - first, pieces = (count + block - 1) / block;
+    for (int j = 0; j < pieces; ++j) {
+      const int b0 = first + static_cast<int>(static_cast<long>(count) * j / pieces);
+      const int b1 = first + static_cast<int>(static_cast<long>(count) * (j + 1) / pieces);
+      blocks_.emplace_back(setups[r], b1 - b0, b0);
+      AbiBlock& b = blocks_.back();
+      for (int i = b0; i < b1; ++i) {
+        block_of_[i] = static_cast<int>(blocks_.size()) - 1, slot_of_[i] = i - b0;
+        const ContactPoint& p = model.points[i];
+        const double normal[2] = {p.nx, p.ny}, tangent[2] = {p.tx(), p.ty()}, x[2] = {p.x, p.y};
+        b.set_joint_point(i - b0, p.area, normal, tangent, x);
+      }
     }
+    first = end;
   }
   opening_.assign(n, 0.0);
   slip_.assign(n, 0.0);
@@ -43,7 +61,7 @@ JointCalls::JointCalls(const WallModel& model, const AbiSetup& setup, int block,
 }
 
 double JointCalls::state(int i, int slot) const {
-  return blocks_[i / block_size_].state(i % block_size_)[slot];
+  return block_of(i).state(slot_of_[i])[slot];
 }
 
 void JointCalls::reference(const CallTime& time) {
@@ -61,7 +79,7 @@ void JointCalls::update(const std::vector<double>& q, const CallTime& time) {
     const double dx = bx - ax, dy = by - ay;
     const double opening = dx * p.nx + dy * p.ny, slip = dx * p.tx() + dy * p.ty();
     const Eigen::Vector3d d(opening - opening_[i], slip - slip_[i], 0.0);
-    blocks_[i / block_size_].set_separation_increment(static_cast<int>(i % block_size_), opening, d);
+    blocks_[block_of_[i]].set_separation_increment(slot_of_[i], opening, d);
     if (abi_signs::unpaired(opening)) ++unpaired_[i];
     opening_[i] = opening;
     slip_[i] = slip;
@@ -88,8 +106,8 @@ void JointCalls::call_all(const CallTime& time) {
   check_status(time);
   // Tractions and energies in point order: the sums do not depend on blocks.
   for (size_t i = 0; i < model_.points.size(); ++i) {
-    const AbiBlock& b = blocks_[i / block_size_];
-    const int k = static_cast<int>(i % block_size_);
+    const AbiBlock& b = block_of(static_cast<int>(i));
+    const int k = slot_of_[i];
     const Eigen::Vector3d t = b.traction(k);
     sigma_[i] = t[0];
     tau_[i] = t[1];
@@ -103,7 +121,7 @@ void JointCalls::check_status(const CallTime& time) const {
     if (status == 0) continue;
     const ContactPoint& p = model_.points[i];
     std::ostringstream m;
-    m << "contact point " << i + 1 << " (" << (p.bed ? "bed" : "head") << " joint at x = " << p.x << ", y = " << p.y
+    m << "contact point " << i + 1 << " (" << role_name(p.role) << " at x = " << p.x << ", y = " << p.y
       << " mm), increment " << time.increment << ": vuinteraction_ returned status " << status << " ("
       << status_meaning(status) << ")";
     throw std::runtime_error(m.str());
@@ -128,8 +146,7 @@ void JointCalls::add_forces(std::vector<double>& f) const {
 double JointCalls::elastic_energy() const {
   double e = 0;
   for (size_t i = 0; i < model_.points.size(); ++i) {
-    const AbiBlock& b = blocks_[i / block_size_];
-    e += b.sed(static_cast<int>(i % block_size_)) * model_.points[i].area;
+    e += block_of(static_cast<int>(i)).sed(slot_of_[i]) * model_.points[i].area;
   }
   return e;
 }

@@ -2,7 +2,9 @@
 // them over: in blocks of at most `block` points (Abaqus's nBlock is at most
 // 136), every block its own argument arrays that persist from increment to
 // increment (stress, state and sed are owned by the caller and handed back),
-// the first call at zero penetration taken by the routine as the bonded
+// one interaction property per block (the points of one interface role,
+// scenes/wall.hpp, each role its own props, as Abaqus calls the routine once
+// per property), the first call at zero penetration taken by the routine as the bonded
 // reference, then each point's penetration (minus its opening) and its slip
 // increment in the joint's local frame, its tributary area, its dircos and
 // stiffDflt = kn. Blocks are independent, so they may be called from several
@@ -19,7 +21,9 @@ namespace mortar::harness {
 
 class JointCalls {
  public:
-  JointCalls(const WallModel& model, const AbiSetup& setup, int block, int threads);
+  // setups[r]: the arguments of role r's interaction (InterfaceRole r);
+  // blocks of one role hold near-equal numbers of points, at most `block`.
+  JointCalls(const WallModel& model, const std::vector<AbiSetup>& setups, int block, int threads);
 
   int points() const { return static_cast<int>(opening_.size()); }
   int blocks() const { return static_cast<int>(blocks_.size()); }
@@ -56,9 +60,12 @@ class JointCalls {
   void call_all(const CallTime& time);
   void check_status(const CallTime& time) const;
 
+  const AbiBlock& block_of(int i) const { return blocks_[block_of_[i]]; }
+
   const WallModel& model_;
   std::vector<AbiBlock> blocks_;
-  int block_size_, threads_;
+  std::vector<int> block_of_, slot_of_;  // point i is slot slot_of_[i] of block block_of_[i]
+  int threads_;
   std::vector<double> opening_, slip_, sigma_, tau_;
   std::vector<long> unpaired_;
   double dissipated_ = 0, seconds_ = 0;
