@@ -123,10 +123,11 @@ void read_wall(const TableReader& t, WallGeometry& w) {
 }
 
 void read_beam(const TableReader& t, WallGeometry& w) {
-  t.keys({"mass", "height", "rotation"});
+  t.keys({"mass", "height", "rotation", "vertical"});
   w.beam_mass = 1e-3 * t.non_negative("mass", 0);  // kg in the file, t inside
   w.beam_height = t.non_negative("height", 0);
   w.beam_rotation = t.choice("rotation", {"fixed", "free"}, 0) == 0 ? BeamRotation::fixed : BeamRotation::free;
+  w.beam_held = t.choice("vertical", {"free", "held"}, 0) == 1;
   if (w.beam_mass <= 0 && !w.tie_top_course)
     throw InputError(t.file() + ": [top_beam] mass = 0 violates the rule: > 0 unless [wall] tie_top_course = true "
                      "(an explicit solver needs a mass on every free degree of freedom)");
@@ -138,24 +139,45 @@ void read_contact(const TableReader& t, WallGeometry& w) {
   w.rule = t.choice("rule", {"trapezoid", "midpoint"}, 0) == 0 ? PointRule::trapezoid : PointRule::midpoint;
 }
 
+// The corners of a history: finite, bounded, each differing from the one before.
+std::vector<double> read_corners(const TableReader& t, const char* key, double bound, const char* unit) {
+  std::vector<double> out = t.numbers(key);
+  if (out.empty()) t.at(key);
+  double prev = 0;
+  for (double d : out) {
+    if (d == prev)
+      throw InputError(position_of(t.file(), t.at(key)) + ": [loading] " + key + " repeats " + format(d) + " " + unit +
+                       ": violates the rule: every corner differs from the one before (the first from 0)");
+    if (!(std::fabs(d) <= bound))
+      throw InputError(position_of(t.file(), t.at(key)) + ": [loading] " + key + " corner " + format(d) + " " + unit +
+                       " violates the rule: |corner| <= " + format(bound) + " " + unit);
+    prev = d;
+  }
+  return out;
+}
+
 void read_loading(const TableReader& t, LoadingSpec& l) {
-  t.keys({"gravity", "self_weight_time", "precompression", "precompression_time", "hold_time", "displacement",
-          "velocity"});
+  t.keys({"gravity", "self_weight_time", "precompression", "precompression_time", "hold_time", "control",
+          "displacement", "velocity", "force", "force_rate", "action_height"});
   l.gravity = t.non_negative("gravity", 9810.0);
   l.self_weight_time = t.positive("self_weight_time");
   l.precompression = t.non_negative("precompression", 0);
   l.precompression_time = t.positive("precompression_time");
   l.hold_time = t.non_negative("hold_time", 0);
-  l.displacement = t.numbers("displacement");
-  if (l.displacement.empty()) t.at("displacement");
-  double prev = 0;
-  for (double d : l.displacement) {
-    if (d == prev)
-      throw InputError(position_of(t.file(), t.at("displacement")) + ": [loading] displacement repeats " + format(d) +
-                       " mm: violates the rule: every corner differs from the one before (the first from 0)");
-    prev = d;
+  l.force_control = t.choice("control", {"displacement", "force"}, 0) == 1;
+  const char* other = l.force_control ? "displacement" : "force";
+  if (t.has(other) || t.has(l.force_control ? "velocity" : "force_rate"))
+    throw InputError(position_of(t.file(), t.at(t.has(other) ? other : l.force_control ? "velocity" : "force_rate")) +
+                     ": [loading] " + (t.has(other) ? other : l.force_control ? "velocity" : "force_rate") +
+                     " violates the rule: not with control = \"" + (l.force_control ? "force" : "displacement") + "\"");
+  if (l.force_control) {
+    l.force = read_corners(t, "force", 1e9, "N");
+    l.force_rate = t.positive("force_rate");
+  } else {
+    l.displacement = read_corners(t, "displacement", 1e4, "mm");
+    l.velocity = t.positive("velocity");
   }
-  l.velocity = t.positive("velocity");
+  if (t.has("action_height")) l.action_height = t.non_negative("action_height", 0);
 }
 
 void read_solver(const TableReader& t, SolverSpec& s) {
@@ -172,7 +194,81 @@ void read_output(const TableReader& t, SceneOutputSpec& o) {
   o.magnification = t.non_negative("magnification", 0);
 }
 
+std::string resolve(const std::string& scene, const std::string& file) {
+  return file.empty() || file[0] == '/' ? file : folder_of(scene) + file;
+}
+
+// A path read from `v`, relative to the file that holds it.
+std::string path_value(const std::string& scene, const toml::value& v, const std::string& what) {
+  return resolve(file_of(v, scene), read_string(scene, v, what));
+}
+
+// The scene file's tables, on top of those of the file it `extends`: a
+// key of a table replaces the base's key, the other keys stay the base's.
+toml::value scene_root(const std::string& path, int depth) {
+  toml::value root = parse_toml_file(path);
+  if (!root.contains("extends")) return root;
+  if (depth >= 8)
+    throw InputError(position_of(path, root.at("extends")) + ": extends violates the rule: at most 8 files in a chain");
+  toml::value merged = scene_root(path_value(path, root.at("extends"), "extends"), depth + 1);
+  for (const auto& [key, v] : root.as_table()) {
+    if (key == "extends") continue;
+    if (v.is_table() && merged.contains(key) && merged.at(key).is_table())
+      for (const auto& [k, x] : v.as_table()) merged.at(key).as_table()[k] = x;
+    else
+      merged.as_table()[key] = v;
+  }
+  merged.as_table().erase("extends");
+  return merged;
+}
+
+// [interfaces]: a parameter file per role; a unit_crack file splits every
+// unit into two halves.
+void read_interfaces(const std::string& path, const toml::value& root, SceneSpec& s) {
+  s.interface.fill(s.joint);
+  if (!root.contains("interfaces")) return;
+  const toml::value& t = root.at("interfaces");
+  if (!t.is_table()) throw InputError(position_of(path, t) + ": 'interfaces' must be a table ([interfaces])");
+  reject_unknown_keys(path, t, {"bed", "head", "unit_crack"}, "[interfaces]");
+  const char* keys[kInterfaceRoles] = {"bed", "head", "unit_crack"};
+  for (int r = 0; r < kInterfaceRoles; ++r) {
+    if (!t.contains(keys[r])) continue;
+    s.interface[r] = read_parameter_file(path_value(path, t.at(keys[r]), std::string("[interfaces] ") + keys[r]));
+  }
+  s.wall.split_units = t.contains("unit_crack");
+}
+
+void read_units(const TableReader& t, UnitElasticity& u) {
+  t.keys({"young_modulus", "poisson"});
+  u.young = t.number("young_modulus", 0, false, [](double x) { return x == 0 || (x >= 1 && x <= 1e6); },
+                     "0 (rigid units) or 1 <= E <= 1e6 MPa");
+  u.poisson = t.number("poisson", 0, false, [](double x) { return x >= 0 && x < 0.5; }, "0 <= nu < 0.5");
+}
+
+// Each role's law with the units in series, checked against the law's rules.
+void lump_units(SceneSpec& s) {
+  for (int r = 0; r < kInterfaceRoles; ++r) {
+    const auto role = static_cast<InterfaceRole>(r);
+    const Parameters p = in_series_with_units(s.interface[r].values, s.units, lumped_unit_length(s.wall, role));
+    ValidationError e = validate(p);
+    if (e.ok()) e = validate(s.interface[r].cap, p);
+    if (!e.ok())
+      throw InputError(s.file + ": the " + role_name(role) + "s' law " + s.interface[r].file + " with [units] in series (kn = " +
+                       format(p.kn) + ", ks = " + format(p.ks) + " N/mm^3): " + e.message());
+    s.interface_law[r] = p;
+  }
+}
+
 }  // namespace
+
+Parameters in_series_with_units(const Parameters& p, const UnitElasticity& u, double l) {
+  if (u.young <= 0) return p;
+  const double g = u.young / (2 * (1 + u.poisson));
+  Parameters out = p;
+  out.kn = 1 / (1 / p.kn + l / u.young);
+  out.ks = 1 / (1 / p.ks + l / g);
+  return out;
+}
 
 std::vector<double> SceneSpec::stage_ends() const {
   const LoadingSpec& l = loading;
@@ -182,23 +278,22 @@ std::vector<double> SceneSpec::stage_ends() const {
   ends.push_back(t += l.precompression_time);
   ends.push_back(t += l.hold_time);
   double prev = 0;
-  for (double d : l.displacement) {
-    ends.push_back(t += std::fabs(d - prev) / l.velocity);
+  for (double d : l.corners()) {
+    ends.push_back(t += std::fabs(d - prev) / l.rate());
     prev = d;
   }
   return ends;
 }
 
 SceneSpec read_scene_file(const std::string& path) {
-  const toml::value root = parse_toml_file(path);
-  reject_unknown_keys(path, root, {"joint", "scheme", "stol", "wall", "top_beam", "contact", "loading", "solver", "output"},
+  const toml::value root = scene_root(path, 0);
+  reject_unknown_keys(path, root, {"extends", "joint", "scheme", "stol", "wall", "interfaces", "units", "top_beam", "contact", "loading", "solver",
+                       "output"},
                       "the scene file");
   SceneSpec s;
   s.file = path;
   if (!root.contains("joint")) throw InputError(path + ": missing key 'joint' (the joint law's parameter file)");
-  std::string joint = read_string(path, root.at("joint"), "joint");
-  if (joint.empty() || joint[0] != '/') joint = folder_of(path) + joint;
-  s.joint = read_parameter_file(joint);
+  s.joint = read_parameter_file(path_value(path, root.at("joint"), "joint"));
   if (root.contains("scheme")) {
     const std::string v = read_string(path, root.at("scheme"), "scheme");
     if (v == "modified-euler") s.scheme = Scheme::modified_euler;
@@ -215,11 +310,14 @@ SceneSpec read_scene_file(const std::string& path) {
                        " violates the rule: 0 < stol < 1, or 0 for the routine's default");
   }
   read_wall(TableReader(path, root, "wall", true), s.wall);
+  read_interfaces(path, root, s);
+  read_units(TableReader(path, root, "units", false), s.units);
   read_beam(TableReader(path, root, "top_beam", false), s.wall);
   read_contact(TableReader(path, root, "contact", false), s.wall);
   read_loading(TableReader(path, root, "loading", true), s.loading);
   read_solver(TableReader(path, root, "solver", false), s.solver);
   read_output(TableReader(path, root, "output", false), s.output);
+  lump_units(s);
   return s;
 }
 

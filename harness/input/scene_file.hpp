@@ -5,6 +5,8 @@
 // the line, the key, the value and the rule.
 #pragma once
 
+#include <array>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,17 @@ struct LoadingSpec {
   double hold_time = 0;             // [s]
   std::vector<double> displacement; // corners of the top beam's ux history [mm]
   double velocity = 0;              // mean speed of a leg [mm/s]
+  // Force control (a cantilever push): the beam's ux is free and a
+  // horizontal force follows the corners `force` [N] at `force_rate` [N/s].
+  bool force_control = false;
+  std::vector<double> force;
+  double force_rate = 0;
+  // Height of the horizontal action above the base [mm]; NaN: the top
+  // beam's centroid. It matters with the beam's rotation free.
+  double action_height = std::numeric_limits<double>::quiet_NaN();
+  // The corners of the controlled quantity and the mean rate of a leg.
+  const std::vector<double>& corners() const { return force_control ? force : displacement; }
+  double rate() const { return force_control ? force_rate : velocity; }
 };
 
 struct SolverSpec {
@@ -41,9 +54,26 @@ struct SceneOutputSpec {
   double magnification = 0;           // of displacements in pictures (0: automatic)
 };
 
+// The units' elasticity, lumped into the interfaces in series where the
+// units are rigid: per unit area kn' = 1 / (1/kn + l/E), ks' = 1 / (1/ks + l/G),
+// G = E / (2 (1 + nu)), l the unit length across the interface
+// (lumped_unit_length, scenes/wall.hpp). E = 0: rigid units, kn and ks as read.
+struct UnitElasticity {
+  double young = 0;    // [MPa]
+  double poisson = 0;  // [-]
+};
+
+// kn, ks of `p` in series with the units over the length l [mm].
+Parameters in_series_with_units(const Parameters& p, const UnitElasticity& u, double l);
+
 struct SceneSpec {
   std::string file;      // the scene file
   ParameterSet joint;    // the joint law (a parameter file, path relative to the scene file)
+  // Each interface role's law as read ([interfaces], `joint` where absent),
+  // and with the units' elasticity in series: what its points get.
+  std::array<ParameterSet, kInterfaceRoles> interface;
+  std::array<Parameters, kInterfaceRoles> interface_law;
+  UnitElasticity units;
   Scheme scheme = Scheme::modified_euler;
   double stol = 0;       // props(16); 0 keeps the routine's default
   WallGeometry wall;

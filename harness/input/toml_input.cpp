@@ -41,7 +41,12 @@ toml::value parse_toml_file(const std::string& path) {
 int line_of(const toml::value& v) { return static_cast<int>(v.location().line()); }
 
 std::string position_of(const std::string& file, const toml::value& v) {
-  return file_position(file, line_of(v));
+  return file_position(file_of(v, file), line_of(v));
+}
+
+std::string file_of(const toml::value& v, const std::string& fallback) {
+  const std::string f = v.location().file_name();
+  return f.empty() || f == "unknown file" ? fallback : f;
 }
 
 namespace {

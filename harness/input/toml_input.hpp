@@ -20,6 +20,8 @@ toml::value parse_toml_file(const std::string& path);
 int line_of(const toml::value& v);
 
 // "file:line" of a value.
+// The file a value was read from (a scene's `extends` merges two), or fallback.
+std::string file_of(const toml::value& v, const std::string& fallback);
 std::string position_of(const std::string& file, const toml::value& v);
 
 // A finite number (TOML integer or float). `what` names the value in messages.

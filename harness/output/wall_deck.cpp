@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "input/input_error.hpp"
 #include "output/inp_deck.hpp"
 #include "output/inp_mesh.hpp"
 
@@ -17,10 +18,16 @@ namespace {
 
 // The joint roles, each its own interaction and pair of surfaces: A the
 // lower/left bodies' faces, B the upper/right ones'.
-enum Role { kBed, kHead, kBase, kTop, kRoles };
-const char* const kRoleNames[kRoles] = {"BED", "HEAD", "BASE", "TOP"};
+enum Role { kBed, kHead, kBase, kTop, kUnitCrack, kRoles };
+const char* const kRoleNames[kRoles] = {"BED", "HEAD", "BASE", "TOP", "UNIT-CRACK"};
+
+// The scene's interface role whose law a deck role gets.
+InterfaceRole law_of(int r) {
+  return r == kHead ? InterfaceRole::head : r == kUnitCrack ? InterfaceRole::unit_crack : InterfaceRole::bed;
+}
 
 Role role_of(const WallModel& m, const ContactPoint& p) {
+  if (p.role == InterfaceRole::unit_crack) return kUnitCrack;
   if (!p.bed) return kHead;
   if (p.a == m.base()) return kBase;
   if (p.b == m.beam()) return kTop;
@@ -193,16 +200,18 @@ class WallDeck {
     }
     InpOptions o;
     const bool controls = s_.scheme != Scheme::modified_euler || s_.stol != 0;
-    o.props = deck_props(s_.joint.values, controls, s_.scheme != Scheme::modified_euler, s_.scheme, s_.stol,
-                         s_.joint.cap);
-    o.depvar = deck_depvar(o.props, false);
     for (int r = 0; r < kRoles; ++r) {
       if (faces[r][0].empty()) continue;
       roles_.push_back(r);
+      const auto law = static_cast<size_t>(law_of(r));
+      o.props = deck_props(s_.interface_law[law], controls, s_.scheme != Scheme::modified_euler, s_.scheme, s_.stol,
+                           s_.interface[law].cap);
+      o.depvar = deck_depvar(o.props, false);
       write_element_surface(out, std::string(kRoleNames[r]) + "-A", faces[r][0]);
       write_element_surface(out, std::string(kRoleNames[r]) + "-B", faces[r][1]);
       o.name = std::string("MORTAR-") + kRoleNames[r];
-      out << "** " << kRoleNames[r] << " joints: the joint law of " << s_.joint.file << "\n";
+      out << "** " << kRoleNames[r] << ": the law of " << s_.interface[law].file
+          << (s_.units.young > 0 ? ", kn and ks in series with the units ([units])" : "") << "\n";
       write_surface_interaction(out, o);
     }
   }
@@ -213,7 +222,7 @@ class WallDeck {
     write_amplitude(out, "SELF-WEIGHT", {{0, 0}, {ends[0], 1}});
     write_amplitude(out, "PRECOMPRESSION", {{0, 0}, {ends[0], 0}, {ends[1], 1}});
     std::vector<std::pair<double, double>> legs = {{0, 0}, {ends[2], 0}};
-    for (size_t k = 0; k < s_.loading.displacement.size(); ++k) legs.push_back({ends[3 + k], s_.loading.displacement[k]});
+    for (size_t k = 0; k < s_.loading.corners().size(); ++k) legs.push_back({ends[3 + k], s_.loading.corners()[k]});
     write_amplitude(out, "TOP-DISPLACEMENT", legs);
     out << "*STEP, NAME=WALL\n*DYNAMIC, EXPLICIT, DIRECT USER CONTROL\n" << num(dt) << ", " << num(T) << "\n";
     if (s_.solver.mass_scaling != 1) out << "*FIXED MASS SCALING, FACTOR=" << num(s_.solver.mass_scaling) << "\n";
@@ -248,6 +257,12 @@ class WallDeck {
 }  // namespace
 
 void write_wall_deck(std::ostream& out, const SceneSpec& scene, const WallModel& model, double time_increment) {
+  // Boundary conditions a deck does not express yet: refused, not approximated.
+  if (scene.wall.beam_held)
+    throw InputError(scene.file + ": [top_beam] vertical = \"held\": inp --scene does not write a beam held from "
+                     "the end of the hold on; run the scene, or set vertical = \"free\" for a deck");
+  if (scene.loading.force_control)
+    throw InputError(scene.file + ": [loading] control = \"force\": inp --scene writes displacement control only");
   WallDeck(scene, model).write(out, time_increment);
 }
 

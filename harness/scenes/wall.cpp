@@ -11,6 +11,7 @@ namespace {
 struct Piece {
   double x0, x1;
   int body;
+  bool crack_after = false;  // the boundary at x1 is a unit crack (not a head joint)
 };
 
 std::vector<double> rectangle(double x0, double y0, double x1, double y1) {
@@ -81,7 +82,8 @@ class Builder {
   WallModel build() {
     make_bodies();
     for (int k = 0; k <= g_.courses; ++k) bed_joint(k);
-    for (int c = 0; c < g_.courses; ++c) head_joints(c);
+    for (int c = 0; c < g_.courses; ++c) vertical_interfaces(c, InterfaceRole::head);
+    for (int c = 0; c < g_.courses; ++c) vertical_interfaces(c, InterfaceRole::unit_crack);
     return std::move(m_);
   }
 
@@ -99,7 +101,6 @@ class Builder {
     layers_.assign(g_.courses, {});
     std::vector<std::pair<int, std::pair<double, double>>> beam_parts;
     for (int c = 0; c < g_.courses; ++c) {
-      const double y0 = c * bh_, y1 = y0 + bh_;
       for (const auto& [x0, x1] : course_pieces(g_, c, L)) {
         int owner;
         if (tied_to_base(c)) {
@@ -107,13 +108,13 @@ class Builder {
         } else if (tied_to_beam(c)) {
           owner = -2;  // the beam, numbered once all blocks exist
           beam_parts.push_back({c, {x0, x1}});
+        } else if (g_.split_units) {
+          const double xm = 0.5 * (x0 + x1);
+          layers_[c].push_back({x0, xm, add_block(c, x0, xm), true});
+          layers_[c].push_back({xm, x1, add_block(c, xm, x1)});
+          continue;
         } else {
-          Body b;
-          b.course = c;
-          add_mass(b, x0, y0, x1, y1, g_.density, g_.unit_depth);
-          b.corners = rectangle(x0, y0, x1, y1);
-          owner = static_cast<int>(m_.bodies.size());
-          m_.bodies.push_back(b);
+          owner = add_block(c, x0, x1);
         }
         layers_[c].push_back({x0, x1, owner});
       }
@@ -130,6 +131,16 @@ class Builder {
     for (auto& layer : layers_)
       for (Piece& p : layer)
         if (p.body == -2) p.body = m_.beam();
+  }
+
+  int add_block(int c, double x0, double x1) {
+    const double y0 = c * bh_, y1 = y0 + bh_;
+    Body b;
+    b.course = c;
+    add_mass(b, x0, y0, x1, y1, g_.density, g_.unit_depth);
+    b.corners = rectangle(x0, y0, x1, y1);
+    m_.bodies.push_back(b);
+    return static_cast<int>(m_.bodies.size()) - 1;
   }
 
   std::vector<Piece> layer(int c) const {
@@ -153,15 +164,17 @@ class Builder {
       }
   }
 
-  void head_joints(int c) {
+  // The head joints (or the unit cracks) of course c.
+  void vertical_interfaces(int c, InterfaceRole role) {
     if (tied_to_base(c) || tied_to_beam(c)) return;
     std::vector<double> s, area;
     const auto& pieces = layers_[c];
     for (size_t j = 0; j + 1 < pieces.size(); ++j) {
+      if (pieces[j].crack_after != (role == InterfaceRole::unit_crack)) continue;
       face_points(g_, c * bh_, (c + 1) * bh_, s, area);
       for (size_t i = 0; i < s.size(); ++i)
         m_.points.push_back(
-            {pieces[j].body, pieces[j + 1].body, pieces[j].x1, s[i], 1.0, 0.0, area[i], false, m_.joint_faces, InterfaceRole::head});
+            {pieces[j].body, pieces[j + 1].body, pieces[j].x1, s[i], 1.0, 0.0, area[i], false, m_.joint_faces, role});
       ++m_.joint_faces;
     }
   }
@@ -173,6 +186,15 @@ class Builder {
 };
 
 }  // namespace
+
+double lumped_unit_length(const WallGeometry& g, InterfaceRole r) {
+  switch (r) {
+    case InterfaceRole::bed: return g.unit_height;
+    case InterfaceRole::head: return g.split_units ? 0.5 * g.unit_length : g.unit_length;
+    case InterfaceRole::unit_crack: return 0.5 * g.unit_length;
+  }
+  return 0;
+}
 
 const char* role_name(InterfaceRole r) {
   switch (r) {

@@ -39,6 +39,12 @@ struct WallGeometry {
   double beam_mass = 0;    // top beam [t]
   double beam_height = 0;  // top beam [mm], for its inertia and pictures
   BeamRotation beam_rotation = BeamRotation::fixed;
+  // The beam's uy: free under its weight and the precompression, or held at
+  // its height from the end of the hold on (the TU Eindhoven set-up).
+  bool beam_held = false;
+  // Each unit as two rigid halves joined by a unit-crack interface through
+  // its middle (Lourenço's potential cracks; scene file [interfaces] unit_crack).
+  bool split_units = false;
   int points_per_face = 2;  // contact points on each face between two bodies
   PointRule rule = PointRule::trapezoid;
 };
@@ -83,7 +89,14 @@ struct WallModel {
   std::vector<int> base_points() const;
 };
 
-// Builds the bodies and contact points. The geometry must have been checked
+// The length of unit material lumped into an interface of role r, half a
+// unit on each side along its normal (docs: harness/README.md, "scene"):
+// a bed joint unit_height, a head joint unit_length (half with split
+// units), a unit crack unit_length / 2.
+double lumped_unit_length(const WallGeometry& g, InterfaceRole r);
+
+// Builds the bodies and contact points, the points grouped by role (bed
+// joints, head joints, unit cracks, in this order). The geometry must have been checked
 // (input/scene_file.cpp); std::invalid_argument otherwise.
 WallModel build_wall(const WallGeometry& g);
 

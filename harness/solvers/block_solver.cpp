@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "abi/props.hpp"
+#include "input/input_error.hpp"
 #include "mortar/state_layout.hpp"
 #include "output/flag_tally.hpp"
 #include "solvers/joint_calls.hpp"
@@ -29,11 +30,12 @@ double precompression_factor_at(const SceneSpec& s, double t) {
   return smooth_step((t - s.loading.self_weight_time) / s.loading.precompression_time);
 }
 
-double top_displacement_at(const SceneSpec& s, double t) {
+double horizontal_action_at(const SceneSpec& s, double t) {
   const std::vector<double> ends = s.stage_ends();
   double start = ends[2], prev = 0;
-  for (size_t k = 0; k < s.loading.displacement.size(); ++k) {
-    const double d = s.loading.displacement[k], end = ends[3 + k];
+  const std::vector<double>& corners = s.loading.corners();
+  for (size_t k = 0; k < corners.size(); ++k) {
+    const double d = corners[k], end = ends[3 + k];
     if (t < end) return prev + (d - prev) * smooth_step((t - start) / (end - start));
     start = end, prev = d;
   }
@@ -52,8 +54,16 @@ BlockSolver::BlockSolver(const SceneSpec& scene, const WallModel& model, const B
     mass_[3 * b + 2] = f * body.inertia;
   }
   for (int i = 0; i < 3; ++i) free_[3 * model.base() + i] = kFixed;
-  free_[3 * model.beam()] = kPrescribed;
-  if (scene.wall.beam_rotation == BeamRotation::fixed) free_[3 * model.beam() + 2] = kFixed;
+  const bool rotation_free = scene.wall.beam_rotation == BeamRotation::free;
+  if (!scene.loading.force_control) free_[3 * model.beam()] = kPrescribed;
+  if (!rotation_free) free_[3 * model.beam() + 2] = kFixed;
+  const Body& beam = model.bodies[model.beam()];
+  action_arm_ = std::isnan(scene.loading.action_height) ? 0.0 : scene.loading.action_height - beam.cy;
+  if (rotation_free && !scene.loading.force_control && std::fabs(action_arm_) > 1e-9 * model.height)
+    throw InputError(scene.file + ": [loading] action_height = " + std::to_string(scene.loading.action_height) +
+                     " mm with a displacement control and [top_beam] rotation = \"free\" violates the rule: the "
+                     "displacement acts at the beam's centroid (y = " + std::to_string(beam.cy) +
+                     " mm) when the beam turns; use control = \"force\" for an action at another height");
   for (size_t i = 0; i < mass_.size(); ++i)
     if (free_[i] == kFree && !(mass_[i] > 0))
       throw std::invalid_argument("BlockSolver: a free degree of freedom without mass (body " +
@@ -66,9 +76,9 @@ BlockSolver::BlockSolver(const SceneSpec& scene, const WallModel& model, const B
 // degrees of freedom (Gershgorin), K summed point by point in absolute
 // values (an upper bound again).
 double BlockSolver::stable_increment_bound() const {
-  const Parameters& p = scene_.joint.values;
   std::vector<double> row(mass_.size(), 0.0);
   for (const ContactPoint& c : model_.points) {
+    const Parameters& p = scene_.interface_law[static_cast<int>(c.role)];
     int dof[6];
     double bn[6], bt[6];
     const int bodies[2] = {c.a, c.b};
@@ -103,12 +113,17 @@ namespace {
 
 // External forces at time t: the weights (real masses: mass scaling changes
 // inertia only) and the precompression on the beam.
-void external_forces(const SceneSpec& s, const WallModel& m, double t, std::vector<double>& f) {
+void external_forces(const SceneSpec& s, const WallModel& m, double arm, double t, std::vector<double>& f) {
   std::fill(f.begin(), f.end(), 0.0);
   const double g = s.loading.gravity * gravity_factor_at(s, t);
   for (size_t b = 1; b < m.bodies.size(); ++b) f[3 * b + 1] = -m.bodies[b].mass * g;
   const double p = s.loading.precompression * m.length * s.wall.unit_depth;
   f[3 * m.beam() + 1] -= p * precompression_factor_at(s, t);
+  if (s.loading.force_control) {  // at the action's height: a moment about the centroid
+    const double h = horizontal_action_at(s, t);
+    f[3 * m.beam()] += h;
+    f[3 * m.beam() + 2] -= arm * h;
+  }
 }
 
 int stage_at(const std::vector<double>& ends, double t) {
@@ -134,18 +149,24 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
                                 std::vector<WallSnapshot>* snapshots) {
   const auto clock_start = std::chrono::steady_clock::now();
   std::vector<AbiSetup> setups(kInterfaceRoles);
-  for (AbiSetup& setup : setups) {
-    setup.n_dir = 2;
-    setup.n_states = state_count_for(scene_.joint.cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
-    setup.props = props_for(scene_.joint.values, scene_.scheme, scene_.stol, 0, scene_.joint.cap);
-    setup.stiffness_default = scene_.joint.values.kn;
+  for (int r = 0; r < kInterfaceRoles; ++r) {
+    const CompressionCap& cap = scene_.interface[r].cap;
+    setups[r].n_dir = 2;
+    setups[r].n_states = state_count_for(cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
+    setups[r].props = props_for(scene_.interface_law[r], scene_.scheme, scene_.stol, 0, cap);
+    setups[r].stiffness_default = scene_.interface_law[r].kn;
   }
   JointCalls joints(model_, setups, options_.block, options_.threads);
 
   const std::vector<double> ends = scene_.stage_ends();
   const std::vector<int> base = model_.base_points();
+  std::vector<int> top;  // the points of the joint under the beam
+  for (size_t i = 0; i < model_.points.size(); ++i)
+    if (model_.points[i].b == model_.beam()) top.push_back(static_cast<int>(i));
   const long n_end = total_increments();
-  const int nd = static_cast<int>(mass_.size()), ux_beam = 3 * model_.beam();
+  const int nd = static_cast<int>(mass_.size()), ux_beam = 3 * model_.beam(), uy_beam = ux_beam + 1;
+  const bool force_control = scene_.loading.force_control;
+  std::vector<char> dofs = free_;  // the beam's uy is held during the run
   const double dt = dt_, c = 0.5 * scene_.solver.mass_damping * dt;
   std::vector<double> q(nd, 0.0), v(nd, 0.0), v_prev(nd, 0.0), f_int(nd, 0.0), f_ext(nd, 0.0), f_next(nd, 0.0);
   std::vector<double> snapshot_times = scene_.output.snapshot_times;
@@ -159,23 +180,33 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   sum.stable_increment = stable_dt_, sum.time_increment = dt_, sum.points = joints.points();
   sum.blocks = sum.calls_per_increment = joints.blocks();
   double work_loads = 0, work_actuator = 0, damping = 0, reaction_prev = 0, u_prev = 0, external_max = 0;
-  external_forces(scene_, model_, 0.0, f_ext);
+  external_forces(scene_, model_, action_arm_, 0.0, f_ext);
 
   for (long n = 0;; ++n) {
     const double t = n * dt;
     const bool last = n == n_end;
     // Velocities to n+1/2 (not past the end: the last sample uses v(n-1/2)).
+    // The beam held at its height from the end of the hold on: the
+    // support takes the beam's vertical momentum (booked as its work).
+    if (scene_.wall.beam_held && dofs[uy_beam] == kFree && t >= ends[2]) {
+      work_loads -= 0.125 * mass_[uy_beam] * (v[uy_beam] + v_prev[uy_beam]) * (v[uy_beam] + v_prev[uy_beam]);
+      dofs[uy_beam] = kFixed, v[uy_beam] = v_prev[uy_beam] = 0;
+    }
     v_prev = v;
     if (!last) {
       for (int i = 0; i < nd; ++i)
-        if (free_[i] == kFree) v[i] = ((1 - c) * v[i] + dt * (f_ext[i] + f_int[i]) / mass_[i]) / (1 + c);
-      v[ux_beam] = (top_displacement_at(scene_, t + dt) - top_displacement_at(scene_, t)) / dt;
+        if (dofs[i] == kFree) v[i] = ((1 - c) * v[i] + dt * (f_ext[i] + f_int[i]) / mass_[i]) / (1 + c);
+      if (!force_control)
+        v[ux_beam] = (horizontal_action_at(scene_, t + dt) - horizontal_action_at(scene_, t)) / dt;
     }
-    // The actuator's force at n: what the beam's prescribed motion needs.
-    const double reaction =
-        last ? -f_int[ux_beam] : mass_[ux_beam] * (v[ux_beam] - v_prev[ux_beam]) / dt - f_int[ux_beam];
-    if (n > 0) work_actuator += 0.5 * (reaction_prev + reaction) * (q[ux_beam] - u_prev);
-    reaction_prev = reaction, u_prev = q[ux_beam];
+    // The actuator's force at n: what the beam's prescribed motion needs
+    // (its work is booked here), or the force it applies (in f_ext).
+    double reaction = f_ext[ux_beam];
+    if (!force_control) {
+      reaction = last ? -f_int[ux_beam] : mass_[ux_beam] * (v[ux_beam] - v_prev[ux_beam]) / dt - f_int[ux_beam];
+      if (n > 0) work_actuator += 0.5 * (reaction_prev + reaction) * (q[ux_beam] - u_prev);
+      reaction_prev = reaction, u_prev = q[ux_beam];
+    }
 
     WallSample s;
     s.increment = n, s.time = t, s.stage = stage_at(ends, t);
@@ -185,6 +216,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
       s.base_shear += joints.tau(i) * model_.points[i].area;
       s.base_normal += joints.sigma(i) * model_.points[i].area;
     }
+    for (int i : top) s.top_normal += joints.sigma(i) * model_.points[i].area;
     WallEnergies& e = s.energy;
     e.external = work_loads + work_actuator;
     e.elastic = joints.elastic_energy();
@@ -193,7 +225,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     e.damage = joints.state_sum(slot::dissipation_damage);
     e.unilateral = joints.state_sum(slot::energy_unilateral);
     for (int i = 0; i < nd; ++i)
-      if (free_[i] != kFixed) e.kinetic += 0.125 * mass_[i] * (v[i] + v_prev[i]) * (v[i] + v_prev[i]);
+      if (dofs[i] != kFixed) e.kinetic += 0.125 * mass_[i] * (v[i] + v_prev[i]) * (v[i] + v_prev[i]);
     e.damping = damping;
     external_max = std::max(external_max, std::fabs(e.external));
     // Measured from the displacement stage on: before it the energies are
@@ -214,15 +246,15 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     if (last) break;
 
     // Positions to n+1, the work of the loads and of the damping over the step.
-    external_forces(scene_, model_, t + dt, f_next);
+    external_forces(scene_, model_, action_arm_, t + dt, f_next);
     for (int i = 0; i < nd; ++i) {
-      if (free_[i] != kFree) continue;
+      if (dofs[i] != kFree) continue;
       const double dq = dt * v[i];
       work_loads += 0.5 * (f_ext[i] + f_next[i]) * dq;
       damping += 2 * c / dt * mass_[i] * v[i] * dq;
       q[i] += dq;
     }
-    q[ux_beam] = top_displacement_at(scene_, t + dt);
+    if (!force_control) q[ux_beam] = horizontal_action_at(scene_, t + dt);
     f_ext.swap(f_next);
     time.increment = static_cast<int>(n + 1);
     time.step_time = time.total_time = t + dt;

@@ -7,9 +7,10 @@
 //
 // M is the block masses and rotary inertias times the mass-scaling factor,
 // α the mass-proportional damping. The base is fixed; the top beam's ux
-// follows the loading history (0 before the displacement stage), its
-// rotation is held at 0 or free, its uy is free under its weight and the
-// precompression.
+// follows the loading history (0 before the displacement stage) or is free
+// under a horizontal force (force control), its rotation is held at 0 or
+// free, its uy is free under its weight and the precompression, or held at
+// its height from the end of the hold on.
 //
 // The stable increment is 2/ω_max with ω_max² bounded by Gershgorin's
 // theorem on M^-1/2·K·M^-1/2, K the undamaged joint stiffness (kn, ks times
@@ -53,7 +54,8 @@ struct WallSample {
   double top_ux = 0, top_uy = 0, top_rotation = 0;  // the top beam [mm, rad]
   double base_shear = 0;   // Σ τ·area over the base joint [N] (positive: the wall pushes the base along +x)
   double base_normal = 0;  // Σ σ·area over the base joint [N] (compression negative)
-  double actuator = 0;     // horizontal force on the top beam's actuator [N]
+  double top_normal = 0;   // Σ σ·area over the joint under the top beam [N] (compression negative)
+  double actuator = 0;     // horizontal force of the actuator on the top beam [N]
   WallEnergies energy;
 };
 
@@ -100,12 +102,14 @@ class BlockSolver {
   BlockSolverOptions options_;
   std::vector<double> mass_;  // scaled, 3 per body
   std::vector<char> free_;    // 3 per body
+  double action_arm_ = 0;     // height of the horizontal action above the beam's centroid [mm]
   double stable_dt_ = 0, dt_ = 0;
 };
 
-// The top beam's horizontal displacement at time t (0 before the last
-// stage), and the factors (0..1) of the self-weight and precompression.
-double top_displacement_at(const SceneSpec& s, double t);
+// The horizontal action at time t (0 before the legs): the top beam's
+// displacement [mm], or its force [N] under force control; and the factors
+// (0..1) of the self-weight and precompression.
+double horizontal_action_at(const SceneSpec& s, double t);
 double gravity_factor_at(const SceneSpec& s, double t);
 double precompression_factor_at(const SceneSpec& s, double t);
 
