@@ -165,11 +165,14 @@ void read_loading(const TableReader& t, LoadingSpec& l) {
   l.precompression_time = t.positive("precompression_time");
   l.hold_time = t.non_negative("hold_time", 0);
   l.force_control = t.choice("control", {"displacement", "force"}, 0) == 1;
-  const char* other = l.force_control ? "displacement" : "force";
-  if (t.has(other) || t.has(l.force_control ? "velocity" : "force_rate"))
-    throw InputError(position_of(t.file(), t.at(t.has(other) ? other : l.force_control ? "velocity" : "force_rate")) +
-                     ": [loading] " + (t.has(other) ? other : l.force_control ? "velocity" : "force_rate") +
-                     " violates the rule: not with control = \"" + (l.force_control ? "force" : "displacement") + "\"");
+  // The other control's keys are an error in the file that sets `control`
+  // (a file that `extends` another overrides its history).
+  const std::string control_file = t.has("control") ? file_of(t.at("control"), t.file()) : t.file();
+  const char* const displacement_keys[2] = {"displacement", "velocity"}, *const force_keys[2] = {"force", "force_rate"};
+  for (const char* other : l.force_control ? displacement_keys : force_keys)
+    if (t.has(other) && file_of(t.at(other), t.file()) == control_file)
+      throw InputError(position_of(t.file(), t.at(other)) + ": [loading] " + other + " violates the rule: not with control = \"" +
+                       (l.force_control ? "force" : "displacement") + "\"");
   if (l.force_control) {
     l.force = read_corners(t, "force", 1e9, "N");
     l.force_rate = t.positive("force_rate");
@@ -210,7 +213,12 @@ toml::value scene_root(const std::string& path, int depth) {
   if (!root.contains("extends")) return root;
   if (depth >= 8)
     throw InputError(position_of(path, root.at("extends")) + ": extends violates the rule: at most 8 files in a chain");
-  toml::value merged = scene_root(path_value(path, root.at("extends"), "extends"), depth + 1);
+  toml::value merged;
+  try {
+    merged = scene_root(path_value(path, root.at("extends"), "extends"), depth + 1);
+  } catch (const InputError& e) {
+    throw InputError(position_of(path, root.at("extends")) + ": extends: " + e.what());
+  }
   for (const auto& [key, v] : root.as_table()) {
     if (key == "extends") continue;
     if (v.is_table() && merged.contains(key) && merged.at(key).is_table())
