@@ -59,11 +59,6 @@ BlockSolver::BlockSolver(const SceneSpec& scene, const WallModel& model, const B
   if (!rotation_free) free_[3 * model.beam() + 2] = kFixed;
   const Body& beam = model.bodies[model.beam()];
   action_arm_ = std::isnan(scene.loading.action_height) ? 0.0 : scene.loading.action_height - beam.cy;
-  if (rotation_free && !scene.loading.force_control && std::fabs(action_arm_) > 1e-9 * model.height)
-    throw InputError(scene.file + ": [loading] action_height = " + std::to_string(scene.loading.action_height) +
-                     " mm with a displacement control and [top_beam] rotation = \"free\" violates the rule: the "
-                     "displacement acts at the beam's centroid (y = " + std::to_string(beam.cy) +
-                     " mm) when the beam turns; use control = \"force\" for an action at another height");
   for (size_t i = 0; i < mass_.size(); ++i)
     if (free_[i] == kFree && !(mass_[i] > 0))
       throw std::invalid_argument("BlockSolver: a free degree of freedom without mass (body " +
@@ -164,8 +159,13 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   for (size_t i = 0; i < model_.points.size(); ++i)
     if (model_.points[i].b == model_.beam()) top.push_back(static_cast<int>(i));
   const long n_end = total_increments();
-  const int nd = static_cast<int>(mass_.size()), ux_beam = 3 * model_.beam(), uy_beam = ux_beam + 1;
+  const int nd = static_cast<int>(mass_.size()), ux_beam = 3 * model_.beam(), uy_beam = ux_beam + 1,
+            rz_beam = ux_beam + 2;
   const bool force_control = scene_.loading.force_control;
+  // A displacement pushing a beam free to turn, at `arm` above its centroid.
+  const double arm = action_arm_;
+  const bool push_turns = !force_control && free_[rz_beam] == kFree;
+  const double inertia_push = mass_[rz_beam] + mass_[ux_beam] * arm * arm;
   std::vector<char> dofs = free_;  // the beam's uy is held during the run
   const double dt = dt_, c = 0.5 * scene_.solver.mass_damping * dt;
   std::vector<double> q(nd, 0.0), v(nd, 0.0), v_prev(nd, 0.0), f_int(nd, 0.0), f_ext(nd, 0.0), f_next(nd, 0.0);
@@ -195,22 +195,35 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     v_prev = v;
     if (!last) {
       for (int i = 0; i < nd; ++i)
-        if (dofs[i] == kFree) v[i] = ((1 - c) * v[i] + dt * (f_ext[i] + f_int[i]) / mass_[i]) / (1 + c);
-      if (!force_control)
-        v[ux_beam] = (horizontal_action_at(scene_, t + dt) - horizontal_action_at(scene_, t)) / dt;
+        if (dofs[i] == kFree && !(push_turns && i == rz_beam))
+          v[i] = ((1 - c) * v[i] + dt * (f_ext[i] + f_int[i]) / mass_[i]) / (1 + c);
+      if (!force_control) {
+        // The point at the action's height follows U: ux = U + arm·θ, and θ
+        // moves under (I + m·arm²)·θ'' = Mθ + arm·Fx − m·arm·U''.
+        const double u0 = horizontal_action_at(scene_, t - dt), u1 = horizontal_action_at(scene_, t),
+                     u2 = horizontal_action_at(scene_, t + dt);
+        if (push_turns) {
+          const double turn = f_ext[rz_beam] + f_int[rz_beam] + arm * (f_ext[ux_beam] + f_int[ux_beam]) -
+                              mass_[ux_beam] * arm * (u2 - 2 * u1 + u0) / (dt * dt);
+          v[rz_beam] = ((1 - c) * v[rz_beam] + dt * turn / inertia_push) / (1 + c);
+        }
+        v[ux_beam] = (u2 - u1) / dt + (push_turns ? arm * v[rz_beam] : 0.0);
+      }
     }
     // The actuator's force at n: what the beam's prescribed motion needs
-    // (its work is booked here), or the force it applies (in f_ext).
+    // (its work over the action point's displacement is booked here), or
+    // the force it applies (in f_ext).
+    const double u_action = q[ux_beam] - arm * q[rz_beam];
     double reaction = f_ext[ux_beam];
     if (!force_control) {
       reaction = last ? -f_int[ux_beam] : mass_[ux_beam] * (v[ux_beam] - v_prev[ux_beam]) / dt - f_int[ux_beam];
-      if (n > 0) work_actuator += 0.5 * (reaction_prev + reaction) * (q[ux_beam] - u_prev);
-      reaction_prev = reaction, u_prev = q[ux_beam];
+      if (n > 0) work_actuator += 0.5 * (reaction_prev + reaction) * (u_action - u_prev);
+      reaction_prev = reaction, u_prev = u_action;
     }
 
     WallSample s;
     s.increment = n, s.time = t, s.stage = stage_at(ends, t);
-    s.top_ux = q[ux_beam], s.top_uy = q[ux_beam + 1], s.top_rotation = q[ux_beam + 2];
+    s.top_ux = u_action, s.top_uy = q[uy_beam], s.top_rotation = q[rz_beam];
     s.actuator = reaction;
     for (int i : base) {
       s.base_shear += joints.tau(i) * model_.points[i].area;
@@ -251,10 +264,10 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
       if (dofs[i] != kFree) continue;
       const double dq = dt * v[i];
       work_loads += 0.5 * (f_ext[i] + f_next[i]) * dq;
-      damping += 2 * c / dt * mass_[i] * v[i] * dq;
+      damping += 2 * c / dt * (push_turns && i == rz_beam ? inertia_push : mass_[i]) * v[i] * dq;
       q[i] += dq;
     }
-    if (!force_control) q[ux_beam] = horizontal_action_at(scene_, t + dt);
+    if (!force_control) q[ux_beam] = horizontal_action_at(scene_, t + dt) + arm * q[rz_beam];
     f_ext.swap(f_next);
     time.increment = static_cast<int>(n + 1);
     time.step_time = time.total_time = t + dt;

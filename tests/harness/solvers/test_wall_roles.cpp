@@ -160,3 +160,27 @@ TEST_CASE("scene files: extends takes the base's keys, the file's own replace th
   CHECK(held.joint.file == base.joint.file);  // the base's path, relative to the base
   CHECK(held.wall.beam_rotation == base.wall.beam_rotation);
 }
+
+TEST_CASE("wall: a displacement at the panel's top, the beam free to turn: rocking at the threshold of statics",
+          "[wall]") {
+  SceneSpec spec = read_scene_file(data("wall_rocking.toml"));
+  const WallModel m = build_wall(spec.wall);
+  double weight = 0;
+  for (size_t b = 1; b < m.bodies.size(); ++b) weight += m.bodies[b].mass * spec.loading.gravity;
+  const double N = spec.loading.precompression * m.length * spec.wall.unit_depth + weight;
+  for (const double height : {m.bodies[m.beam()].cy, 600.0, 900.0}) {
+    CAPTURE(height);
+    spec.loading.action_height = height;
+    const std::vector<WallSample> h = history(spec, 10);
+    // The force on the rocking panel's plateau (the start of rocking rings
+    // at the panel's frequency, lightly damped).
+    const double plateau = h.back().actuator, threshold = N * 0.5 * m.length / height;
+    INFO("actuator force at the end " << plateau << " N, statics " << threshold << " N, end rotation "
+                                      << h.back().top_rotation);
+    CHECK(std::fabs(plateau - threshold) < 0.01 * threshold);
+    CHECK(h.back().top_ux == Approx(spec.loading.displacement.back()));  // the action point followed the history
+    CHECK(h.back().top_rotation < -1e-3);
+    const WallEnergies& e = h.back().energy;
+    CHECK(std::fabs(e.balance()) < 1e-3 * e.external);
+  }
+}
