@@ -244,7 +244,7 @@ TEST_CASE("inp --scene: units, rigid bodies, joints by role, props, loading", "[
 }
 
 TEST_CASE("inp --scene: the J4D wall's tied courses join the base and the beam", "[inputs][decks]") {
-  const SceneSpec s = read_scene_file(kExamples + "/tu_eindhoven_wall/wall_j4d.toml");
+  const SceneSpec s = read_scene_file(kExamples + "/tu_eindhoven_wall/wall_j4d_free_beam.toml");
   const InpModel m(wall_deck_text(s));
   int units = 0;
   for (const auto& [name, e] : m.elsets) units += name.rfind("UNIT-", 0) == 0;
