@@ -117,17 +117,21 @@ int stage_at(const std::vector<double>& ends, double t) {
   return static_cast<int>(ends.size()) - 1;
 }
 
-WallSnapshot snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label) {
+}  // namespace
+
+WallSnapshot wall_snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label) {
   WallSnapshot s;
   s.time = t, s.label = label, s.q = q;
   for (int i = 0; i < joints.points(); ++i) {
-    s.damage.push_back(std::max(joints.state(i, slot::damage_n), joints.state(i, slot::damage_s)));
     s.opening.push_back(joints.opening(i));
+    s.slip.push_back(joints.slip(i));
+    s.damage_n.push_back(joints.state(i, slot::damage_n));
+    s.damage_s.push_back(joints.state(i, slot::damage_s));
+    s.dissipation.push_back(joints.state(i, slot::dissipation_plastic) + joints.state(i, slot::dissipation_damage) +
+                            joints.state(i, slot::energy_unilateral));
   }
   return s;
 }
-
-}  // namespace
 
 WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSample&)>& sample,
                                 const std::function<void(long, long)>& progress,
@@ -200,13 +204,13 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     if (s.stage >= 3) {
       if (std::fabs(s.base_shear) > std::fabs(sum.peak_shear)) {
         sum.peak_shear = s.base_shear, sum.peak_displacement = s.top_ux, sum.peak_time = t;
-        if (snapshots) peak_snapshot = snapshot(joints, q, t, "peak");
+        if (snapshots) peak_snapshot = wall_snapshot(joints, q, t, "peak");
       }
       if (e.internal() > 0) sum.max_kinetic_ratio = std::max(sum.max_kinetic_ratio, e.kinetic / e.internal());
     }
     if (snapshots)
       while (next_snapshot < snapshot_times.size() && snapshot_times[next_snapshot] <= t + 0.5 * dt)
-        snapshots->push_back(snapshot(joints, q, t, "t = " + std::to_string(snapshot_times[next_snapshot++]) + " s"));
+        snapshots->push_back(wall_snapshot(joints, q, t, "t = " + std::to_string(snapshot_times[next_snapshot++]) + " s"));
     if (sample && (last || (every > 0 && n % every == 0))) sample(s);
     if (progress && n % 256 == 0) progress(n, n_end);
     if (last) break;
@@ -231,7 +235,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   }
   if (snapshots) {
     if (!peak_snapshot.q.empty()) snapshots->push_back(peak_snapshot);
-    snapshots->push_back(snapshot(joints, q, n_end * dt, "end"));
+    snapshots->push_back(wall_snapshot(joints, q, n_end * dt, "end"));
   }
   sum.increments = n_end;
   FlagTally flags;

@@ -42,8 +42,9 @@ struct WallEnergies {
   double kinetic = 0;
   double damping = 0;      // work of the mass-proportional damping
   double internal() const { return elastic + dissipated; }
-  // External work minus everything it went into.
-  double balance() const { return external - elastic - dissipated - kinetic - damping; }
+  // Everything the external work went into, and the external work minus it.
+  double accounted() const { return elastic + dissipated + kinetic + damping; }
+  double balance() const { return external - accounted(); }
 };
 
 struct WallSample {
@@ -62,8 +63,14 @@ struct WallSnapshot {
   double time = 0;
   std::string label;
   std::vector<double> q;  // 3 per body
-  std::vector<double> damage, opening;  // per point: max(d_n, d_s), opening [mm]
+  // Per point: opening and slip [mm], d_n, d_s, and the dissipated energy
+  // per unit area, SDV 16 + 17 + 18 [N/mm].
+  std::vector<double> opening, slip, damage_n, damage_s, dissipation;
 };
+
+class JointCalls;
+// The wall under q with the joints' state after their last call.
+WallSnapshot wall_snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label);
 
 struct WallRunSummary {
   double stable_increment = 0, time_increment = 0;
