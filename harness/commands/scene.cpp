@@ -71,7 +71,8 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   std::ostringstream wrote;
   wrote << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv (" << snaps.size()
         << " snapshots, displacements x " << factors.str()
-        << (spec.output.magnification > 0 ? ", the scene file's" : ", each picture's largest joint opening or slip drawn as 5 % of the height")
+        << (spec.output.magnification > 0 ? ", the scene file's"
+                                          : ", each picture's largest joint opening or slip drawn as 5 % of the height")
         << ")\n";
   out << fit_to_width(summary + wrote.str());
   if (!args.plots) return 0;

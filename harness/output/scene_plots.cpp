@@ -51,20 +51,30 @@ void energy_chart(std::ostream& g) {
        " title \"external work\", \\\n     "
     << "\"history.csv\" using (column(\"time\")):(column(\"energy_accounted\")) with lines lw 2 dt 2 lc rgb "
        "\"#56B4E9\" title \"sum of the parts (the top of the stack)\"\n"
-    << "set origin 0,0\nset size 1,0.3\nset tmargin 0\nset bmargin\nset format x\nset title \"\"\nset offsets 0, 0, 0, 0\nset key top left "
-       "noinvert\nset xlabel \"time [s]\"\nset ylabel \"error [N mm]\"\n"
+    << "set origin 0,0\nset size 1,0.3\nset tmargin 0\nset bmargin\nset format x\nset title \"\"\n"
+    << "set offsets 0, 0, 0, 0\nset key top left noinvert\nset xlabel \"time [s]\"\nset ylabel \"error [N mm]\"\n"
     << "plot \"history.csv\" using (column(\"time\")):(column(\"balance_error\")) with lines lw 2 lc rgb \"#000000\""
        " title \"balance error = external work - sum of the parts\"\n"
     << "unset multiplot\nset origin 0,0\nset size 1,1\nset tmargin\nset key noinvert\n";
 }
 
+// The colour legend: the quantity and its unit.
+std::string joint_colour_legend(JointColour colour) {
+  switch (colour) {
+    case JointColour::opening: return "joint opening [mm] (closed: grey)";
+    case JointColour::damage: return "damage max(d_n, d_s) [-]";
+    case JointColour::dissipation: break;
+  }
+  return "dissipated energy per unit area, SDV 16 + 17 + 18 [N/mm]";
+}
+
 void wall_picture(std::ostream& g, int k, const std::string& label, const Magnification& mag, JointColour colour) {
   const std::string stem = "snapshot_" + std::to_string(k);
-  const std::string scale =
-      mag.automatic ? "displacements x " + number(mag.factor) + ": the largest joint opening or slip (" +
-                          number(mag.largest_relative) + " mm) drawn as 5 % of the wall's height"
-                    : "displacements x " + number(mag.factor) + " (the scene file's magnification; largest joint "
-                                                                "opening or slip " + number(mag.largest_relative) + " mm)";
+  const std::string factor = "displacements x " + number(mag.factor), largest = number(mag.largest_relative) + " mm";
+  const std::string scale = mag.automatic ? factor + ": the largest joint opening or slip (" + largest +
+                                                ") drawn as 5 % of the wall's height"
+                                          : factor + " (the scene file's; the largest joint opening or slip " +
+                                                largest + ")";
   std::string value, range = "[0:*]";
   switch (colour) {
     case JointColour::dissipation: value = "column(\"dissipation_N_per_mm\")"; break;
@@ -85,15 +95,6 @@ void wall_picture(std::ostream& g, int k, const std::string& label, const Magnif
 }
 
 }  // namespace
-
-std::string joint_colour_legend(JointColour colour) {
-  switch (colour) {
-    case JointColour::opening: return "joint opening [mm] (closed: grey)";
-    case JointColour::damage: return "damage max(d_n, d_s) [-]";
-    case JointColour::dissipation: break;
-  }
-  return "dissipated energy per unit area, SDV 16 + 17 + 18 [N/mm]";
-}
 
 std::string write_scene_plot_script(const std::string& dir, const std::vector<std::string>& labels,
                                     const std::vector<Magnification>& magnifications, JointColour colour) {

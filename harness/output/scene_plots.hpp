@@ -19,7 +19,4 @@ namespace mortar::harness {
 std::string write_scene_plot_script(const std::string& dir, const std::vector<std::string>& snapshot_labels,
                                     const std::vector<Magnification>& magnifications, JointColour colour);
 
-// The wall pictures' colour legend, naming the quantity and its unit.
-std::string joint_colour_legend(JointColour colour);
-
 }  // namespace mortar::harness
