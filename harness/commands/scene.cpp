@@ -30,17 +30,6 @@ void check_args(const SceneArgs& a) {
   prepare_output_folder(a.out, "--out");
 }
 
-// Magnification of the pictures: the largest body displacement drawn as a
-// twentieth of the wall's height, unless the scene file says.
-double magnification(const SceneSpec& spec, const WallModel& m, const std::vector<WallSnapshot>& snaps) {
-  if (spec.output.magnification > 0) return spec.output.magnification;
-  double umax = 0;
-  for (const WallSnapshot& s : snaps)
-    for (size_t b = 0; b + 1 < m.bodies.size(); ++b)  // the beam carries the imposed displacement
-      umax = std::max({umax, std::abs(s.q[3 * b]), std::abs(s.q[3 * b + 1])});
-  return umax > 0 ? 0.05 * m.height / umax : 1.0;
-}
-
 }  // namespace
 
 int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
@@ -65,8 +54,14 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
       },
       [&](long done, long all) { progress.update(done, all); }, &snaps);
   progress.finish();
-  const double mag = magnification(spec, model, snaps);
-  for (size_t k = 0; k < snaps.size(); ++k) write_snapshot_csv(args.out, static_cast<int>(k), model, snaps[k], mag);
+  std::vector<Magnification> mags;
+  std::ostringstream factors;
+  factors.precision(3);
+  for (size_t k = 0; k < snaps.size(); ++k) {
+    mags.push_back(picture_magnification(spec.output, model, snaps[k]));
+    write_snapshot_csv(args.out, static_cast<int>(k), model, snaps[k], mags[k].factor);
+    factors << (k ? ", " : "") << mags[k].factor;
+  }
   const std::string summary = scene_summary(spec, model, r, last);
   {
     std::ofstream f(args.out + "/summary.txt");
@@ -75,12 +70,15 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   }
   std::ostringstream wrote;
   wrote << "scene: wrote " << args.out << "/history.csv, summary.txt, snapshot_*_{blocks,joints}.csv (" << snaps.size()
-        << " snapshots, displacements x " << mag << ")\n";
+        << " snapshots, displacements x " << factors.str()
+        << (spec.output.magnification > 0 ? ", the scene file's"
+                                          : ", each picture's largest joint opening or slip drawn as 5 % of the height")
+        << ")\n";
   out << fit_to_width(summary + wrote.str());
   if (!args.plots) return 0;
   std::vector<std::string> labels;
   for (const WallSnapshot& s : snaps) labels.push_back(s.label);
-  const std::string script = write_scene_plot_script(args.out, labels, mag);
+  const std::string script = write_scene_plot_script(args.out, labels, mags, spec.output.joint_colour);
   if (!gnuplot_available()) {
     err << "scene: gnuplot is not on the PATH: wrote " << script << " only\n";
     return 0;

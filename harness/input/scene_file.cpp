@@ -191,10 +191,11 @@ void read_solver(const TableReader& t, SolverSpec& s) {
 }
 
 void read_output(const TableReader& t, SceneOutputSpec& o) {
-  t.keys({"every", "snapshots", "magnification"});
+  t.keys({"every", "snapshots", "magnification", "joint_colour"});
   o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
   o.snapshot_times = t.numbers("snapshots");
   o.magnification = t.non_negative("magnification", 0);
+  o.joint_colour = static_cast<JointColour>(t.choice("joint_colour", {"dissipation", "opening", "damage"}, 0));
 }
 
 std::string resolve(const std::string& scene, const std::string& file) {

@@ -48,10 +48,15 @@ struct SolverSpec {
   double mass_damping = 0.0;   // alpha of C = alpha·M [1/s]
 };
 
+// What colours the joint points in the wall pictures: the dissipated energy
+// per unit area (SDV 16 + 17 + 18), the opening, or max(d_n, d_s).
+enum class JointColour { dissipation, opening, damage };
+
 struct SceneOutputSpec {
   int every = 0;                      // a history row every `every` increments (0: about 2000 rows)
   std::vector<double> snapshot_times; // pictures of the wall at these times [s] (the peak and the end always)
   double magnification = 0;           // of displacements in pictures (0: automatic)
+  JointColour joint_colour = JointColour::dissipation;
 };
 
 // The units' elasticity, lumped into the interfaces in series where the

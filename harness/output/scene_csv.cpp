@@ -1,5 +1,6 @@
 #include "output/scene_csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -18,6 +19,12 @@ std::ofstream open_for_writing(const std::string& path) {
   return f;
 }
 
+// Displacement of the material point (x, y) of body `b` under q (small rotation).
+void displacement(const Body& b, const double* q, double x, double y, double& ux, double& uy) {
+  ux = q[0] - q[2] * (y - b.cy);
+  uy = q[1] + q[2] * (x - b.cx);
+}
+
 }  // namespace
 
 struct HistoryCsv::Impl {
@@ -27,7 +34,7 @@ struct HistoryCsv::Impl {
 HistoryCsv::HistoryCsv(const std::string& path) : impl_(new Impl{open_for_writing(path)}) {
   impl_->f << "increment,time,stage,top_ux,top_uy,top_rotation,base_shear,base_normal,actuator,"
               "external_work,elastic_energy,dissipation,plastic_dissipation,damage_dissipation,unilateral_energy,"
-              "kinetic_energy,damping_work,balance_error,kinetic_to_internal\n";
+              "kinetic_energy,damping_work,energy_accounted,balance_error,kinetic_to_internal\n";
 }
 
 HistoryCsv::~HistoryCsv() { delete impl_; }
@@ -37,39 +44,58 @@ void HistoryCsv::row(const WallSample& s) {
   impl_->f << s.increment << ',' << s.time << ',' << s.stage << ',' << s.top_ux << ',' << s.top_uy << ','
            << s.top_rotation << ',' << s.base_shear << ',' << s.base_normal << ',' << s.actuator << ',' << e.external
            << ',' << e.elastic << ',' << e.dissipated << ',' << e.plastic << ',' << e.damage << ',' << e.unilateral
-           << ',' << e.kinetic << ',' << e.damping << ',' << e.balance() << ','
+           << ',' << e.kinetic << ',' << e.damping << ',' << e.accounted() << ',' << e.balance() << ','
            << (e.internal() > 0 ? e.kinetic / e.internal() : 0.0) << '\n';
+}
+
+Magnification picture_magnification(const SceneOutputSpec& output, const WallModel& m, const WallSnapshot& s) {
+  Magnification mag;
+  for (const ContactPoint& p : m.points) {
+    // The two bodies' displacements at the point: equal under a rigid motion.
+    double ax, ay, bx, by;
+    displacement(m.bodies[p.a], &s.q[3 * p.a], p.x, p.y, ax, ay);
+    displacement(m.bodies[p.b], &s.q[3 * p.b], p.x, p.y, bx, by);
+    mag.largest_relative = std::max(mag.largest_relative, std::hypot(bx - ax, by - ay));
+  }
+  if (output.magnification > 0) {
+    mag.factor = output.magnification, mag.automatic = false;
+  } else if (mag.largest_relative > 0) {
+    mag.factor = 0.05 * m.height / mag.largest_relative;
+  }
+  return mag;
 }
 
 void write_snapshot_csv(const std::string& dir, int k, const WallModel& m, const WallSnapshot& s,
                         double magnification) {
   const std::string stem = dir + "/snapshot_" + std::to_string(k);
   std::ofstream b = open_for_writing(stem + "_blocks.csv");
-  b << "x,y,body\n";
+  b << "x_mm,y_mm,body\n";
   for (size_t i = 0; i < m.bodies.size(); ++i) {
     const Body& body = m.bodies[i];
     const double* q = &s.q[3 * i];
     const auto& c = body.corners;
     for (size_t j = 0; j <= c.size() / 2; ++j) {  // closed outline: the first corner again
       const double x = c[2 * (j % (c.size() / 2))], y = c[2 * (j % (c.size() / 2)) + 1];
-      const double ux = q[0] - q[2] * (y - body.cy), uy = q[1] + q[2] * (x - body.cx);
+      double ux, uy;
+      displacement(body, q, x, y, ux, uy);
       b << x + magnification * ux << ',' << y + magnification * uy << ',' << i << '\n';
     }
     b << "\n";
   }
   std::ofstream j = open_for_writing(stem + "_joints.csv");
-  j << "x,y,bed,damage,opening\n";
+  j << "x_mm,y_mm,bed,opening_mm,slip_mm,d_n,d_s,dissipation_N_per_mm\n";
   for (size_t i = 0; i < m.points.size(); ++i) {
     const ContactPoint& p = m.points[i];
     // Drawn at the mean displaced position of the two faces.
     double x = p.x, y = p.y;
     for (int body : {p.a, p.b}) {
-      const Body& bd = m.bodies[body];
-      const double* q = &s.q[3 * body];
-      x += 0.5 * magnification * (q[0] - q[2] * (p.y - bd.cy));
-      y += 0.5 * magnification * (q[1] + q[2] * (p.x - bd.cx));
+      double ux, uy;
+      displacement(m.bodies[body], &s.q[3 * body], p.x, p.y, ux, uy);
+      x += 0.5 * magnification * ux;
+      y += 0.5 * magnification * uy;
     }
-    j << x << ',' << y << ',' << (p.bed ? 1 : 0) << ',' << s.damage[i] << ',' << s.opening[i] << '\n';
+    j << x << ',' << y << ',' << (p.bed ? 1 : 0) << ',' << s.opening[i] << ',' << s.slip[i] << ',' << s.damage_n[i]
+      << ',' << s.damage_s[i] << ',' << s.dissipation[i] << '\n';
   }
 }
 

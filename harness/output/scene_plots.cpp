@@ -11,6 +11,13 @@ namespace mortar::harness {
 
 namespace {
 
+std::string number(double x) {  // 3 significant digits: 208, 0.241
+  std::ostringstream s;
+  s.precision(3);
+  s << x;
+  return s.str();
+}
+
 void base_shear_chart(std::ostream& g) {
   g << "set title \"Base shear against top displacement\"\nset key off\n"
     << "set xlabel \"top displacement [mm]\"\nset ylabel \"base shear [kN]\"\n"
@@ -18,42 +25,79 @@ void base_shear_chart(std::ostream& g) {
        " with lines lw 2 lc rgb \"#0072B2\"\n";
 }
 
+// Above: the parts the external work went into, stacked (each band from the
+// sum of those below it), the external work over them. Below: the balance
+// error, external work minus the parts, on its own scale.
 void energy_chart(std::ostream& g) {
-  g << "set title \"Energy history\"\nset key top left box opaque\n"
-    << "set xlabel \"time [s]\"\nset ylabel \"energy [N mm]\"\nplot ";
-  const char* cols[][3] = {{"external_work", "external work", "#000000"},
-                           {"elastic_energy", "joint elastic", "#0072B2"},
-                           {"dissipation", "dissipated (spd + sfd)", "#7F7F7F"},
-                           {"plastic_dissipation", "  of which plastic (SDV 16)", "#D55E00"},
-                           {"damage_dissipation", "  damage (SDV 17)", "#009E73"},
-                           {"unilateral_energy", "  closure jumps (SDV 18)", "#8C564B"},
-                           {"kinetic_energy", "kinetic", "#CC79A7"},
-                           {"damping_work", "damping", "#E69F00"},
-                           {"balance_error", "balance error", "#56B4E9"}};
-  // The dissipation with its split: SDV 16 and 18 can be large and nearly
-  // cancel where damaged joints close (docs/model.md 6, closure jump).
-  for (size_t i = 0; i < sizeof cols / sizeof cols[0]; ++i)
-    g << (i ? ", \\\n     " : "") << "\"history.csv\" using (column(\"time\")):(column(\"" << cols[i][0]
-      << "\")) with lines lw 2 lc rgb " << quoted(cols[i][2]) << " title " << quoted(cols[i][1]);
-  g << "\n";
+  const char* parts[][3] = {{"elastic_energy", "joint elastic", "#0072B2"},
+                            {"plastic_dissipation", "dissipated: plastic (SDV 16)", "#D55E00"},
+                            {"damage_dissipation", "dissipated: damage (SDV 17)", "#009E73"},
+                            {"unilateral_energy", "dissipated: unilateral (SDV 18)", "#8C564B"},
+                            {"kinetic_energy", "kinetic", "#CC79A7"},
+                            {"damping_work", "damping", "#E69F00"}};
+  g << "set multiplot\nset origin 0,0.3\nset size 1,0.7\nset bmargin 1\nset format x \"\"\nset xlabel \"\"\n"
+    << "set title \"Energy books: where the external work went\"\nset key top left box opaque invert\n"
+    << "set offsets 0, 0, graph 0.5, 0\n"
+    << "set ylabel \"energy [N mm]\"\nplot ";
+  std::string below = "0";
+  for (const auto& p : parts) {
+    const std::string above = below + " + column(\"" + p[0] + "\")";
+    g << "\"history.csv\" using (column(\"time\")):(" << below << "):(" << above
+      << ") with filledcurves fs solid 0.75 noborder lc rgb " << quoted(p[2]) << " title " << quoted(p[1])
+      << ", \\\n     ";
+    below = above;
+  }
+  g << "\"history.csv\" using (column(\"time\")):(column(\"external_work\")) with lines lw 4 lc rgb \"#000000\""
+       " title \"external work\", \\\n     "
+    << "\"history.csv\" using (column(\"time\")):(column(\"energy_accounted\")) with lines lw 2 dt 2 lc rgb "
+       "\"#56B4E9\" title \"sum of the parts (the top of the stack)\"\n"
+    << "set origin 0,0\nset size 1,0.3\nset tmargin 0\nset bmargin\nset format x\nset title \"\"\n"
+    << "set offsets 0, 0, 0, 0\nset key top left noinvert\nset xlabel \"time [s]\"\nset ylabel \"error [N mm]\"\n"
+    << "plot \"history.csv\" using (column(\"time\")):(column(\"balance_error\")) with lines lw 2 lc rgb \"#000000\""
+       " title \"balance error = external work - sum of the parts\"\n"
+    << "unset multiplot\nset origin 0,0\nset size 1,1\nset tmargin\nset key noinvert\n";
 }
 
-void wall_picture(std::ostream& g, int k, const std::string& label, double magnification) {
+// The colour legend: the quantity and its unit.
+std::string joint_colour_legend(JointColour colour) {
+  switch (colour) {
+    case JointColour::opening: return "joint opening [mm] (closed: grey)";
+    case JointColour::damage: return "damage max(d_n, d_s) [-]";
+    case JointColour::dissipation: break;
+  }
+  return "dissipated energy per unit area, SDV 16 + 17 + 18 [N/mm]";
+}
+
+void wall_picture(std::ostream& g, int k, const std::string& label, const Magnification& mag, JointColour colour) {
   const std::string stem = "snapshot_" + std::to_string(k);
-  std::ostringstream factor;  // 50, not std::to_string's 50.000000
-  factor << magnification;
-  g << "set title " << quoted("The wall at " + label + " (displacements x " + factor.str() +
-                              "; joints coloured by damage)")
+  const std::string factor = "displacements x " + number(mag.factor), largest = number(mag.largest_relative) + " mm";
+  const std::string scale = mag.automatic ? factor + ": the largest joint opening or slip (" + largest +
+                                                ") drawn as 5 % of the wall's height"
+                                          : factor + " (the scene file's; the largest joint opening or slip " +
+                                                largest + ")";
+  std::string value, range = "[0:*]";
+  switch (colour) {
+    case JointColour::dissipation: value = "column(\"dissipation_N_per_mm\")"; break;
+    case JointColour::opening: value = "column(\"opening_mm\")"; break;
+    case JointColour::damage:
+      value = "(column(\"d_n\") > column(\"d_s\") ? column(\"d_n\") : column(\"d_s\"))";
+      range = "[0:1]";
+      break;
+  }
+  const std::string at = label == "peak" || label == "end" ? "the " + label : label;
+  g << "set title " << quoted("The wall at " + at) << ".\"\\n\"." << quoted(scale)
     << "\nset key off\nset size ratio -1\nset xlabel \"x [mm]\"\nset ylabel \"y [mm]\"\n"
-    << "set cbrange [0:1]\nset cblabel \"damage\"\nset palette defined (0 \"#d0d0d0\", 0.5 \"#E69F00\", 1 \"#D55E00\")\n"
+    << "set cbrange " << range << "\nset cblabel " << quoted(joint_colour_legend(colour))
+    << "\nset palette defined (0 \"#d0d0d0\", 0.5 \"#E69F00\", 1 \"#D55E00\")\n"
     << "plot " << quoted(stem + "_blocks.csv") << " using 1:2 with lines lw 1 lc rgb \"#404040\", \\\n     "
-    << quoted(stem + "_joints.csv") << " using 1:2:4 with points pt 7 ps 0.6 palette\nset size noratio\n";
+    << quoted(stem + "_joints.csv") << " using 1:2:(" << value << ") with points pt 7 ps 0.6 palette\n"
+    << "set size noratio\nset cbrange [*:*]\n";
 }
 
 }  // namespace
 
 std::string write_scene_plot_script(const std::string& dir, const std::vector<std::string>& labels,
-                                    double magnification) {
+                                    const std::vector<Magnification>& magnifications, JointColour colour) {
   const std::string name = "scene.gp";
   std::ofstream g(dir + "/" + name);
   if (!g) throw InputError(cannot_write(dir + "/" + name));
@@ -68,7 +112,7 @@ std::string write_scene_plot_script(const std::string& dir, const std::vector<st
     energy_chart(g);
     for (size_t k = 0; k < labels.size(); ++k) {
       g << "set output \"wall_" << k << "." << ext << "\"\n";
-      wall_picture(g, static_cast<int>(k), labels[k], magnification);
+      wall_picture(g, static_cast<int>(k), labels[k], magnifications.at(k), colour);
     }
     g << "set output\n";
   }

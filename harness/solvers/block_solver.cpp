@@ -30,6 +30,18 @@ double precompression_factor_at(const SceneSpec& s, double t) {
   return smooth_step((t - s.loading.self_weight_time) / s.loading.precompression_time);
 }
 
+std::vector<AbiSetup> interface_setups(const SceneSpec& scene) {
+  std::vector<AbiSetup> setups(kInterfaceRoles);
+  for (int r = 0; r < kInterfaceRoles; ++r) {
+    const CompressionCap& cap = scene.interface[r].cap;
+    setups[r].n_dir = 2;
+    setups[r].n_states = state_count_for(cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
+    setups[r].props = props_for(scene.interface_law[r], scene.scheme, scene.stol, 0, cap);
+    setups[r].stiffness_default = scene.interface_law[r].kn;
+  }
+  return setups;
+}
+
 double horizontal_action_at(const SceneSpec& s, double t) {
   const std::vector<double> ends = s.stage_ends();
   double start = ends[2], prev = 0;
@@ -127,31 +139,27 @@ int stage_at(const std::vector<double>& ends, double t) {
   return static_cast<int>(ends.size()) - 1;
 }
 
-WallSnapshot snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label) {
+}  // namespace
+
+WallSnapshot wall_snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label) {
   WallSnapshot s;
   s.time = t, s.label = label, s.q = q;
   for (int i = 0; i < joints.points(); ++i) {
-    s.damage.push_back(std::max(joints.state(i, slot::damage_n), joints.state(i, slot::damage_s)));
     s.opening.push_back(joints.opening(i));
+    s.slip.push_back(joints.slip(i));
+    s.damage_n.push_back(joints.state(i, slot::damage_n));
+    s.damage_s.push_back(joints.state(i, slot::damage_s));
+    s.dissipation.push_back(joints.state(i, slot::dissipation_plastic) + joints.state(i, slot::dissipation_damage) +
+                            joints.state(i, slot::energy_unilateral));
   }
   return s;
 }
-
-}  // namespace
 
 WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSample&)>& sample,
                                 const std::function<void(long, long)>& progress,
                                 std::vector<WallSnapshot>* snapshots) {
   const auto clock_start = std::chrono::steady_clock::now();
-  std::vector<AbiSetup> setups(kInterfaceRoles);
-  for (int r = 0; r < kInterfaceRoles; ++r) {
-    const CompressionCap& cap = scene_.interface[r].cap;
-    setups[r].n_dir = 2;
-    setups[r].n_states = state_count_for(cap);  // SDV 1-23, the flags (35), with a cap kappa_c (36)
-    setups[r].props = props_for(scene_.interface_law[r], scene_.scheme, scene_.stol, 0, cap);
-    setups[r].stiffness_default = scene_.interface_law[r].kn;
-  }
-  JointCalls joints(model_, setups, options_.block, options_.threads);
+  JointCalls joints(model_, interface_setups(scene_), options_.block, options_.threads);
 
   const std::vector<double> ends = scene_.stage_ends();
   const std::vector<int> base = model_.base_points();
@@ -247,13 +255,13 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     if (s.stage >= 3) {
       if (std::fabs(s.base_shear) > std::fabs(sum.peak_shear)) {
         sum.peak_shear = s.base_shear, sum.peak_displacement = s.top_ux, sum.peak_time = t;
-        if (snapshots) peak_snapshot = snapshot(joints, q, t, "peak");
+        if (snapshots) peak_snapshot = wall_snapshot(joints, q, t, "peak");
       }
       if (e.internal() > 0) sum.max_kinetic_ratio = std::max(sum.max_kinetic_ratio, e.kinetic / e.internal());
     }
     if (snapshots)
       while (next_snapshot < snapshot_times.size() && snapshot_times[next_snapshot] <= t + 0.5 * dt)
-        snapshots->push_back(snapshot(joints, q, t, "t = " + std::to_string(snapshot_times[next_snapshot++]) + " s"));
+        snapshots->push_back(wall_snapshot(joints, q, t, "t = " + std::to_string(snapshot_times[next_snapshot++]) + " s"));
     if (sample && (last || (every > 0 && n % every == 0))) sample(s);
     if (progress && n % 256 == 0) progress(n, n_end);
     if (last) break;
@@ -278,7 +286,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   }
   if (snapshots) {
     if (!peak_snapshot.q.empty()) snapshots->push_back(peak_snapshot);
-    snapshots->push_back(snapshot(joints, q, n_end * dt, "end"));
+    snapshots->push_back(wall_snapshot(joints, q, n_end * dt, "end"));
   }
   sum.increments = n_end;
   FlagTally flags;

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "abi/vuinteraction_call.hpp"
 #include "input/scene_file.hpp"
 #include "scenes/wall.hpp"
 
@@ -43,8 +44,9 @@ struct WallEnergies {
   double kinetic = 0;
   double damping = 0;      // work of the mass-proportional damping
   double internal() const { return elastic + dissipated; }
-  // External work minus everything it went into.
-  double balance() const { return external - elastic - dissipated - kinetic - damping; }
+  // Everything the external work went into, and the external work minus it.
+  double accounted() const { return elastic + dissipated + kinetic + damping; }
+  double balance() const { return external - accounted(); }
 };
 
 struct WallSample {
@@ -64,8 +66,14 @@ struct WallSnapshot {
   double time = 0;
   std::string label;
   std::vector<double> q;  // 3 per body
-  std::vector<double> damage, opening;  // per point: max(d_n, d_s), opening [mm]
+  // Per point: opening and slip [mm], d_n, d_s, and the dissipated energy
+  // per unit area, SDV 16 + 17 + 18 [N/mm].
+  std::vector<double> opening, slip, damage_n, damage_s, dissipation;
 };
+
+class JointCalls;
+// The wall under q with the joints' state after their last call.
+WallSnapshot wall_snapshot(const JointCalls& joints, const std::vector<double>& q, double t, const std::string& label);
 
 struct WallRunSummary {
   double stable_increment = 0, time_increment = 0;
@@ -105,6 +113,10 @@ class BlockSolver {
   double action_arm_ = 0;     // height of the horizontal action above the beam's centroid [mm]
   double stable_dt_ = 0, dt_ = 0;
 };
+
+// The arguments of each interface role's interaction (InterfaceRole order):
+// its law with the units in series, the scene's scheme and stol, its cap.
+std::vector<AbiSetup> interface_setups(const SceneSpec& scene);
 
 // The horizontal action at time t (0 before the legs): the top beam's
 // displacement [mm], or its force [N] under force control; and the factors

@@ -56,6 +56,15 @@ std::vector<std::array<double, 4>> expected_units(const SceneSpec& s) {
     if (x > 0) out.push_back({0, c * bh, x, (c + 1) * bh});
     for (; x < L - 1e-9; x += bl) out.push_back({x, c * bh, std::min(x + bl, L), (c + 1) * bh});
   }
+  if (g.split_units) {  // every unit two halves
+    std::vector<std::array<double, 4>> halves;
+    for (const auto& u : out) {
+      const double xm = 0.5 * (u[0] + u[2]);
+      halves.push_back({u[0], u[1], xm, u[3]});
+      halves.push_back({xm, u[1], u[2], u[3]});
+    }
+    out = halves;
+  }
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -249,6 +258,14 @@ TEST_CASE("inp --scene: the J4D wall's tied courses join the base and the beam",
   int units = 0;
   for (const auto& [name, e] : m.elsets) units += name.rfind("UNIT-", 0) == 0;
   CHECK(units == static_cast<int>(expected_units(s).size()));
+  // The unit cracks: their own interaction, with their own law.
+  REQUIRE(s.wall.split_units);
+  const std::string text = wall_deck_text(s);
+  const size_t at = text.find("*SURFACE INTERACTION, NAME=MORTAR-UNIT-CRACK,");
+  REQUIRE(at != std::string::npos);
+  const size_t line = text.find('\n', text.find("** props(1..8)", at)) + 1;  // props(1) = kn, the halves in series
+  CHECK(inp_number(text.substr(line, text.find(',', line) - line)) ==
+        Approx(s.interface_law[static_cast<int>(InterfaceRole::unit_crack)].kn));
   const double bh = s.wall.unit_height + s.wall.joint;
   CHECK(m.box_of("BASE")[1][1] == Approx(bh));                       // the bottom course in the base
   CHECK(m.box_of("BEAM")[0][1] == Approx((s.wall.courses - 1) * bh));  // the top course in the beam
