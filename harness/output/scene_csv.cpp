@@ -83,7 +83,7 @@ void write_snapshot_csv(const std::string& dir, int k, const WallModel& m, const
     b << "\n";
   }
   std::ofstream j = open_for_writing(stem + "_joints.csv");
-  j << "x_mm,y_mm,bed,opening_mm,slip_mm,d_n,d_s,dissipation_N_per_mm\n";
+  j << "x_mm,y_mm,bed,opening_mm,slip_mm,d_n,d_s,dissipation_N_per_mm,kappa_c_mm,role\n";
   for (size_t i = 0; i < m.points.size(); ++i) {
     const ContactPoint& p = m.points[i];
     // Drawn at the mean displaced position of the two faces.
@@ -95,7 +95,8 @@ void write_snapshot_csv(const std::string& dir, int k, const WallModel& m, const
       y += 0.5 * magnification * uy;
     }
     j << x << ',' << y << ',' << (p.bed ? 1 : 0) << ',' << s.opening[i] << ',' << s.slip[i] << ',' << s.damage_n[i]
-      << ',' << s.damage_s[i] << ',' << s.dissipation[i] << '\n';
+      << ',' << s.damage_s[i] << ',' << s.dissipation[i] << ',' << s.kappa_c[i] << ',' << static_cast<int>(p.role)
+      << '\n';
   }
 }
 

@@ -75,9 +75,12 @@ void wall_picture(std::ostream& g, int k, const std::string& label, const Magnif
                                                 ") drawn as 5 % of the wall's height"
                                           : factor + " (the scene file's; the largest joint opening or slip " +
                                                 largest + ")";
-  std::string value, range = "[0:*]";
+  std::string value, range = "[0:*]", scale_cb = "";
   switch (colour) {
-    case JointColour::dissipation: value = "column(\"dissipation_N_per_mm\")"; break;
+    case JointColour::dissipation:  // decades apart: a cracked joint (GIC) and a crushed toe (Gfc)
+      value = "(column(\"dissipation_N_per_mm\") > 1e-3 ? column(\"dissipation_N_per_mm\") : 1e-3)";
+      range = "[1e-3:*]", scale_cb = "set logscale cb\n";
+      break;
     case JointColour::opening: value = "column(\"opening_mm\")"; break;
     case JointColour::damage:
       value = "(column(\"d_n\") > column(\"d_s\") ? column(\"d_n\") : column(\"d_s\"))";
@@ -87,11 +90,12 @@ void wall_picture(std::ostream& g, int k, const std::string& label, const Magnif
   const std::string at = label == "peak" || label == "end" ? "the " + label : label;
   g << "set title " << quoted("The wall at " + at) << ".\"\\n\"." << quoted(scale)
     << "\nset key off\nset size ratio -1\nset xlabel \"x [mm]\"\nset ylabel \"y [mm]\"\n"
-    << "set cbrange " << range << "\nset cblabel " << quoted(joint_colour_legend(colour))
+    << scale_cb << "set cbrange " << range << "\nset cblabel "
+    << quoted(joint_colour_legend(colour) + (scale_cb.empty() ? "" : " (log)"))
     << "\nset palette defined (0 \"#d0d0d0\", 0.5 \"#E69F00\", 1 \"#D55E00\")\n"
     << "plot " << quoted(stem + "_blocks.csv") << " using 1:2 with lines lw 1 lc rgb \"#404040\", \\\n     "
     << quoted(stem + "_joints.csv") << " using 1:2:(" << value << ") with points pt 7 ps 0.6 palette\n"
-    << "set size noratio\nset cbrange [*:*]\n";
+    << "set size noratio\nset cbrange [*:*]\nunset logscale cb\n";
 }
 
 }  // namespace

@@ -151,6 +151,7 @@ WallSnapshot wall_snapshot(const JointCalls& joints, const std::vector<double>& 
     s.damage_s.push_back(joints.state(i, slot::damage_s));
     s.dissipation.push_back(joints.state(i, slot::dissipation_plastic) + joints.state(i, slot::dissipation_damage) +
                             joints.state(i, slot::energy_unilateral));
+    s.kappa_c.push_back(joints.kappa_c(i));
   }
   return s;
 }

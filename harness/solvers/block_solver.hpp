@@ -66,9 +66,9 @@ struct WallSnapshot {
   double time = 0;
   std::string label;
   std::vector<double> q;  // 3 per body
-  // Per point: opening and slip [mm], d_n, d_s, and the dissipated energy
-  // per unit area, SDV 16 + 17 + 18 [N/mm].
-  std::vector<double> opening, slip, damage_n, damage_s, dissipation;
+  // Per point: opening and slip [mm], d_n, d_s, the dissipated energy per
+  // unit area, SDV 16 + 17 + 18 [N/mm], and the cap's kappa_c [mm] (0 without).
+  std::vector<double> opening, slip, damage_n, damage_s, dissipation, kappa_c;
 };
 
 class JointCalls;

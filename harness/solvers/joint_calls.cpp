@@ -64,6 +64,11 @@ double JointCalls::state(int i, int slot) const {
   return block_of(i).state(slot_of_[i])[slot];
 }
 
+double JointCalls::kappa_c(int i) const {
+  const AbiBlock& b = block_of(i);
+  return b.n_states() > cap_slot::kappa_c ? b.state(slot_of_[i])[cap_slot::kappa_c] : 0.0;
+}
+
 void JointCalls::reference(const CallTime& time) {
   for (AbiBlock& b : blocks_)
     for (int k = 0; k < b.size(); ++k) b.set_separation_increment(k, 0.0, Eigen::Vector3d::Zero());

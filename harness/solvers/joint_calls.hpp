@@ -46,6 +46,9 @@ class JointCalls {
   // as unpaired (abi_signs::unpaired): not integrated.
   long unpaired(int i) const { return unpaired_[i]; }
   double state(int i, int slot) const;  // SDV slot+1
+  // The compression cap's plastic closure kappa_c of point i [mm] (SDV 36;
+  // 0 for a role without a cap).
+  double kappa_c(int i) const;
   // Sums over the points, times the tributary areas [N·mm]: sed, and the
   // accumulated spd + sfd of every call so far.
   double elastic_energy() const;

@@ -88,6 +88,8 @@ TEST_CASE("scene output: the dissipation per point is SDV 16 + 17 + 18 of the po
     CHECK(csv["d_s"][i] == Approx(joints.state(i, slot::damage_s)).margin(1e-12));
     CHECK(csv["opening_mm"][i] == Approx(joints.opening(i)).margin(1e-12));
     CHECK(csv["slip_mm"][i] == Approx(joints.slip(i)).margin(1e-12));
+    CHECK(csv["role"][i] == static_cast<int>(model.points[static_cast<size_t>(i)].role));
+    CHECK(csv["kappa_c_mm"][i] == 0.0);  // no cap in this wall's law
   }
   INFO("largest SDV 16, 17, 18: " << largest[0] << ", " << largest[1] << ", " << largest[2] << " N/mm");
   CHECK(largest[0] > 0);

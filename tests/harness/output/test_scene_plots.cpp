@@ -43,7 +43,8 @@ std::set<std::string> header(const std::filesystem::path& path) {
 TEST_CASE("scene plots: the colour legend names the quantity and its unit", "[scene_plots]") {
   const Magnification mag;
   const std::string dissipation = script_for(JointColour::dissipation, mag);
-  CHECK_THAT(dissipation, Catch::Contains("set cblabel \"dissipated energy per unit area, SDV 16 + 17 + 18 [N/mm]\"") &&
+  CHECK_THAT(dissipation, Catch::Contains("set cblabel \"dissipated energy per unit area, SDV 16 + 17 + 18 [N/mm] (log)") &&
+                              Catch::Contains("set logscale cb") &&
                               Catch::Contains("column(\"dissipation_N_per_mm\")"));
   const std::string damage = script_for(JointColour::damage, mag);
   CHECK_THAT(damage, Catch::Contains("set cblabel \"damage max(d_n, d_s) [-]\"") &&
@@ -71,7 +72,7 @@ TEST_CASE("scene plots: every column the script reads is written, and the stack 
   { HistoryCsv history((dir / "history.csv").string()); }
   WallSnapshot snap;
   snap.q.assign(3 * model.bodies.size(), 0.0);
-  for (auto* v : {&snap.opening, &snap.slip, &snap.damage_n, &snap.damage_s, &snap.dissipation})
+  for (auto* v : {&snap.opening, &snap.slip, &snap.damage_n, &snap.damage_s, &snap.dissipation, &snap.kappa_c})
     v->assign(model.points.size(), 0.0);
   write_snapshot_csv(dir.string(), 0, model, snap, 1.0);
   std::set<std::string> written = header(dir / "history.csv");
