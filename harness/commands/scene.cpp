@@ -8,6 +8,7 @@
 
 #include "input/input_error.hpp"
 #include "input/scene_file.hpp"
+#include "output/csv.hpp"
 #include "output/output_paths.hpp"
 #include "output/plots.hpp"
 #include "output/progress.hpp"
@@ -62,6 +63,8 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
     write_snapshot_csv(args.out, static_cast<int>(k), model, snaps[k], mags[k].factor);
     factors << (k ? ", " : "") << mags[k].factor;
   }
+  if (!spec.output.experiment.empty())  // beside the pictures, with the scene's units
+    write_csv(args.out + "/experiment.csv", {"top_displacement_mm", "base_shear_kN"}, spec.output.experiment_curve);
   const std::string summary = scene_summary(spec, model, r, last);
   {
     std::ofstream f(args.out + "/summary.txt");
@@ -78,7 +81,8 @@ int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   if (!args.plots) return 0;
   std::vector<std::string> labels;
   for (const WallSnapshot& s : snaps) labels.push_back(s.label);
-  const std::string script = write_scene_plot_script(args.out, labels, mags, spec.output.joint_colour);
+  const std::string script =
+      write_scene_plot_script(args.out, labels, mags, spec.output.joint_colour, spec.output.experiment_label);
   if (!gnuplot_available()) {
     err << "scene: gnuplot is not on the PATH: wrote " << script << " only\n";
     return 0;

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "input/toml_input.hpp"
+#include "output/csv.hpp"
 
 namespace mortar::harness {
 
@@ -191,7 +192,7 @@ void read_solver(const TableReader& t, SolverSpec& s) {
 }
 
 void read_output(const TableReader& t, SceneOutputSpec& o) {
-  t.keys({"every", "snapshots", "magnification", "joint_colour"});
+  t.keys({"every", "snapshots", "magnification", "joint_colour", "experiment", "experiment_label"});
   o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
   o.snapshot_times = t.numbers("snapshots");
   o.magnification = t.non_negative("magnification", 0);
@@ -205,6 +206,19 @@ std::string resolve(const std::string& scene, const std::string& file) {
 // A path read from `v`, relative to the file that holds it.
 std::string path_value(const std::string& scene, const toml::value& v, const std::string& what) {
   return resolve(file_of(v, scene), read_string(scene, v, what));
+}
+
+// [output] experiment: read and checked here, before anything is written.
+void read_experiment(const std::string& path, const TableReader& t, SceneOutputSpec& o) {
+  if (!t.has("experiment")) return;
+  o.experiment = path_value(path, t.at("experiment"), "[output] experiment");
+  const CsvTable curve = read_csv(o.experiment);
+  const int u = curve.require("top_displacement_mm"), v = curve.require("base_shear_kN");
+  for (const auto& row : curve.rows) o.experiment_curve.push_back({row[static_cast<size_t>(u)], row[static_cast<size_t>(v)]});
+  if (o.experiment_curve.empty())
+    throw InputError(o.experiment + ": [output] experiment has no rows: violates the rule: at least one point");
+  o.experiment_label = t.has("experiment_label") ? read_string(path, t.at("experiment_label"), "[output] experiment_label")
+                                                 : "experiment";
 }
 
 // The scene file's tables, on top of those of the file it `extends`: a
@@ -326,6 +340,7 @@ SceneSpec read_scene_file(const std::string& path) {
   read_loading(TableReader(path, root, "loading", true), s.loading);
   read_solver(TableReader(path, root, "solver", false), s.solver);
   read_output(TableReader(path, root, "output", false), s.output);
+  read_experiment(path, TableReader(path, root, "output", false), s.output);
   lump_units(s);
   return s;
 }

@@ -57,6 +57,12 @@ struct SceneOutputSpec {
   std::vector<double> snapshot_times; // pictures of the wall at these times [s] (the peak and the end always)
   double magnification = 0;           // of displacements in pictures (0: automatic)
   JointColour joint_colour = JointColour::dissipation;
+  // A measured curve drawn beside the base shear: its file (columns
+  // top_displacement_mm, base_shear_kN; '#' lines state its source), its
+  // rows as read, and its label in the chart.
+  std::string experiment;
+  std::vector<std::vector<double>> experiment_curve;
+  std::string experiment_label;
 };
 
 // The units' elasticity, lumped into the interfaces in series where the

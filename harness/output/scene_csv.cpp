@@ -32,7 +32,7 @@ struct HistoryCsv::Impl {
 };
 
 HistoryCsv::HistoryCsv(const std::string& path) : impl_(new Impl{open_for_writing(path)}) {
-  impl_->f << "increment,time,stage,top_ux,top_uy,top_rotation,base_shear,base_normal,actuator,"
+  impl_->f << "increment,time,stage,top_ux,top_uy,top_rotation,base_shear,base_normal,top_normal,actuator,"
               "external_work,elastic_energy,dissipation,plastic_dissipation,damage_dissipation,unilateral_energy,"
               "kinetic_energy,damping_work,energy_accounted,balance_error,kinetic_to_internal\n";
 }
@@ -42,7 +42,7 @@ HistoryCsv::~HistoryCsv() { delete impl_; }
 void HistoryCsv::row(const WallSample& s) {
   const WallEnergies& e = s.energy;
   impl_->f << s.increment << ',' << s.time << ',' << s.stage << ',' << s.top_ux << ',' << s.top_uy << ','
-           << s.top_rotation << ',' << s.base_shear << ',' << s.base_normal << ',' << s.actuator << ',' << e.external
+           << s.top_rotation << ',' << s.base_shear << ',' << s.base_normal << ',' << s.top_normal << ',' << s.actuator << ',' << e.external
            << ',' << e.elastic << ',' << e.dissipated << ',' << e.plastic << ',' << e.damage << ',' << e.unilateral
            << ',' << e.kinetic << ',' << e.damping << ',' << e.accounted() << ',' << e.balance() << ','
            << (e.internal() > 0 ? e.kinetic / e.internal() : 0.0) << '\n';

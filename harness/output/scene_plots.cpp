@@ -18,11 +18,18 @@ std::string number(double x) {  // 3 significant digits: 208, 0.241
   return s.str();
 }
 
-void base_shear_chart(std::ostream& g) {
-  g << "set title \"Base shear against top displacement\"\nset key off\n"
+// The scene's base shear, and the measured curve (experiment.csv) when
+// the scene file names one.
+void base_shear_chart(std::ostream& g, const std::string& experiment) {
+  g << "set title \"Base shear against top displacement\"\n"
+    << (experiment.empty() ? "set key off\n" : "set key bottom right box opaque\n")
     << "set xlabel \"top displacement [mm]\"\nset ylabel \"base shear [kN]\"\n"
     << "plot \"history.csv\" using (column(\"top_ux\")):(column(\"stage\") >= 3 ? column(\"base_shear\")/1000 : 1/0)"
-       " with lines lw 2 lc rgb \"#0072B2\"\n";
+       " with lines lw 2 lc rgb \"#0072B2\" title \"this scene\"";
+  if (!experiment.empty())
+    g << ", \\\n     \"experiment.csv\" using (column(\"top_displacement_mm\")):(column(\"base_shear_kN\")) with "
+         "linespoints lw 1 pt 6 lc rgb \"#000000\" title " << quoted(experiment);
+  g << "\n";
 }
 
 // Above: the parts the external work went into, stacked (each band from the
@@ -101,7 +108,8 @@ void wall_picture(std::ostream& g, int k, const std::string& label, const Magnif
 }  // namespace
 
 std::string write_scene_plot_script(const std::string& dir, const std::vector<std::string>& labels,
-                                    const std::vector<Magnification>& magnifications, JointColour colour) {
+                                    const std::vector<Magnification>& magnifications, JointColour colour,
+                                    const std::string& experiment_label) {
   const std::string name = "scene.gp";
   std::ofstream g(dir + "/" + name);
   if (!g) throw InputError(cannot_write(dir + "/" + name));
@@ -111,7 +119,7 @@ std::string write_scene_plot_script(const std::string& dir, const std::vector<st
     const std::string term = std::string(ext) == "png" ? "pngcairo" : "svg";
     const std::string size = " size 1000,700 enhanced font \"DejaVu Sans,12\" background \"white\"\n";
     g << "set terminal " << term << size << "set output \"base_shear." << ext << "\"\n";
-    base_shear_chart(g);
+    base_shear_chart(g, experiment_label);
     g << "set output \"energy." << ext << "\"\n";
     energy_chart(g);
     for (size_t k = 0; k < labels.size(); ++k) {

@@ -15,8 +15,10 @@
 namespace mortar::harness {
 
 // Writes <dir>/scene.gp for the snapshots (a label and a magnification
-// each); returns its name.
+// each), the measured curve <dir>/experiment.csv drawn beside the base shear
+// when `experiment_label` is not empty; returns its name.
 std::string write_scene_plot_script(const std::string& dir, const std::vector<std::string>& snapshot_labels,
-                                    const std::vector<Magnification>& magnifications, JointColour colour);
+                                    const std::vector<Magnification>& magnifications, JointColour colour,
+                                    const std::string& experiment_label = "");
 
 }  // namespace mortar::harness
