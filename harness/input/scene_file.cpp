@@ -212,9 +212,14 @@ std::string path_value(const std::string& scene, const toml::value& v, const std
 void read_experiment(const std::string& path, const TableReader& t, SceneOutputSpec& o) {
   if (!t.has("experiment")) return;
   o.experiment = path_value(path, t.at("experiment"), "[output] experiment");
-  const CsvTable curve = read_csv(o.experiment);
-  const int u = curve.require("top_displacement_mm"), v = curve.require("base_shear_kN");
-  for (const auto& row : curve.rows) o.experiment_curve.push_back({row[static_cast<size_t>(u)], row[static_cast<size_t>(v)]});
+  try {
+    const CsvTable curve = read_csv(o.experiment);
+    const int u = curve.require("top_displacement_mm"), v = curve.require("base_shear_kN");
+    for (const auto& row : curve.rows)
+      o.experiment_curve.push_back({row[static_cast<size_t>(u)], row[static_cast<size_t>(v)]});
+  } catch (const InputError& e) {
+    throw InputError(position_of(path, t.at("experiment")) + ": [output] experiment: " + e.what());
+  }
   if (o.experiment_curve.empty())
     throw InputError(o.experiment + ": [output] experiment has no rows: violates the rule: at least one point");
   o.experiment_label = t.has("experiment_label") ? read_string(path, t.at("experiment_label"), "[output] experiment_label")

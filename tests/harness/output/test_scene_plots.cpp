@@ -95,3 +95,13 @@ TEST_CASE("scene plots: every column the script reads is written, and the stack 
                          Catch::Contains("column(\"energy_accounted\")") &&
                          Catch::Contains("column(\"balance_error\")"));
 }
+
+TEST_CASE("scene plots: a measured curve named by the scene is drawn beside the base shear, with its label",
+          "[scene_plots]") {
+  const std::filesystem::path dir = fresh_directory("scene_plots_experiment");
+  write_scene_plot_script(dir.string(), {"peak"}, {Magnification{}}, JointColour::dissipation, "wall X, test");
+  const std::string with = read_text(dir / "scene.gp");
+  CHECK_THAT(with, Catch::Contains("\"experiment.csv\" using (column(\"top_displacement_mm\")):(column(\"base_shear_kN\"))") &&
+                       Catch::Contains("title \"wall X, test\""));
+  CHECK_THAT(script_for(JointColour::dissipation, Magnification{}), !Catch::Contains("experiment.csv"));
+}

@@ -184,3 +184,12 @@ TEST_CASE("wall: a displacement at the panel's top, the beam free to turn: rocki
     CHECK(std::fabs(e.balance()) < 1e-3 * e.external);
   }
 }
+
+TEST_CASE("scene files: [output] experiment is read with the scene, its rows as in the file", "[wall][inputs]") {
+  const SceneSpec s = read_scene_file(std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples/tu_eindhoven_wall/wall_j4d.toml");
+  REQUIRE(s.output.experiment_curve.size() == 10);
+  CHECK(s.output.experiment_curve[4] == std::vector<double>{1.0, 57.0});
+  CHECK_THAT(s.output.experiment_label, Catch::Contains("J4D"));
+  CHECK_THROWS_WITH(read_scene_file(data("bad/scene_experiment_columns.toml")),
+                    Catch::Contains("experiment_no_shear.csv: has no column 'base_shear_kN'"));
+}
