@@ -159,17 +159,19 @@ void read_loading(const TableReader& t, LoadingSpec& l) {
 }
 
 void read_solver(const TableReader& t, SolverSpec& s) {
-  t.keys({"safety_factor", "mass_scaling", "mass_damping"});
+  t.keys({"safety_factor", "mass_scaling", "mass_damping", "max_increments"});
   s.safety_factor = t.number("safety_factor", 0.8, false, [](double x) { return x > 0 && x <= 1; }, "0 < x <= 1");
   s.mass_scaling = t.number("mass_scaling", 1.0, false, [](double x) { return x >= 1; }, ">= 1");
   s.mass_damping = t.non_negative("mass_damping", 0);
+  s.max_increments = t.integer("max_increments", s.max_increments, 1, 1000000000);
 }
 
 void read_output(const TableReader& t, SceneOutputSpec& o) {
-  t.keys({"every", "snapshots", "magnification"});
+  t.keys({"every", "snapshots", "magnification", "max_rows"});
   o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
   o.snapshot_times = t.numbers("snapshots");
   o.magnification = t.non_negative("magnification", 0);
+  o.max_rows = t.integer("max_rows", o.max_rows, 1, 1000000000);
 }
 
 }  // namespace

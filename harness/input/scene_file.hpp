@@ -33,12 +33,14 @@ struct SolverSpec {
   double safety_factor = 0.8;  // on the stable increment (Gershgorin bound, solvers/block_solver.hpp)
   double mass_scaling = 1.0;   // factor on every inertia (not on weights)
   double mass_damping = 0.0;   // alpha of C = alpha·M [1/s]
+  long max_increments = 20000000;  // a scene that plans more is rejected (solvers/scene_plan.hpp)
 };
 
 struct SceneOutputSpec {
   int every = 0;                      // a history row every `every` increments (0: about 2000 rows)
   std::vector<double> snapshot_times; // pictures of the wall at these times [s] (the peak and the end always)
   double magnification = 0;           // of displacements in pictures (0: automatic)
+  long max_rows = 1000000;            // history rows, at most (solvers/scene_plan.hpp)
 };
 
 struct SceneSpec {

@@ -173,12 +173,14 @@ void JointCalls::block_part(int j, const CallTime& time, const double* q) {
       failed_[j] = i;
       return;
     }
-    const Eigen::Vector3d t = b.traction(k);
-    sigma_[i] = t[0];
-    tau_[i] = t[1];
+    // AbiBlock::traction, inline.
+    const double* stress = b.stress(k);
+    const double sigma = abi_signs::normal_traction_from_stress(stress[0]), tau = abi_signs::kShearSign * stress[1];
+    sigma_[i] = sigma;
+    tau_[i] = tau;
     // The traction on body b (law signs: tension pulls b back towards a).
-    const double fx = -(t[0] * p.nx + t[1] * p.tx()) * p.area;
-    const double fy = -(t[0] * p.ny + t[1] * p.ty()) * p.area;
+    const double fx = -(sigma * p.nx + tau * p.tx()) * p.area;
+    const double fy = -(sigma * p.ny + tau * p.ty()) * p.area;
     const Body& ba = model_.bodies[p.a];
     const Body& bb = model_.bodies[p.b];
     double* push = &push_[static_cast<size_t>(kPush) * i];
