@@ -61,6 +61,12 @@ class TableReader {
   long integer(const char* key, long fallback, long min, long max) const {
     return has(key) ? read_integer(file_, at(key), what(key), min, max) : fallback;
   }
+  // A bound on a count: whole, written as an integer or as 2e7.
+  long count(const char* key, long fallback) const {
+    return static_cast<long>(number(key, static_cast<double>(fallback), false,
+                                    [](double x) { return x >= 1 && x <= 1e9 && x == std::floor(x); },
+                                    "a whole number in [1, 1e9]"));
+  }
   bool boolean(const char* key, bool fallback) const {
     if (!has(key)) return fallback;
     if (!at(key).is_boolean())
@@ -163,7 +169,7 @@ void read_solver(const TableReader& t, SolverSpec& s) {
   s.safety_factor = t.number("safety_factor", 0.8, false, [](double x) { return x > 0 && x <= 1; }, "0 < x <= 1");
   s.mass_scaling = t.number("mass_scaling", 1.0, false, [](double x) { return x >= 1; }, ">= 1");
   s.mass_damping = t.non_negative("mass_damping", 0);
-  s.max_increments = t.integer("max_increments", s.max_increments, 1, 1000000000);
+  s.max_increments = t.count("max_increments", s.max_increments);
 }
 
 void read_output(const TableReader& t, SceneOutputSpec& o) {
@@ -171,7 +177,7 @@ void read_output(const TableReader& t, SceneOutputSpec& o) {
   o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
   o.snapshot_times = t.numbers("snapshots");
   o.magnification = t.non_negative("magnification", 0);
-  o.max_rows = t.integer("max_rows", o.max_rows, 1, 1000000000);
+  o.max_rows = t.count("max_rows", o.max_rows);
 }
 
 }  // namespace

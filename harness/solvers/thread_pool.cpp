@@ -45,8 +45,10 @@ ThreadPool::~ThreadPool() {
   for (std::thread& w : workers_) w.join();
 }
 
+// A worker starts from generation 0, the pool's before its first job: a job
+// or the stop published before the worker first runs is not missed.
 void ThreadPool::worker() {
-  std::uint32_t seen = generation_of(claim_.load(std::memory_order_acquire));
+  std::uint32_t seen = 0;
   for (;;) {
     const auto start = std::chrono::steady_clock::now();
     std::uint32_t generation;
