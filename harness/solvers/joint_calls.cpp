@@ -81,16 +81,25 @@ JointCalls::JointCalls(const WallModel& model, const std::vector<AbiSetup>& setu
   force_.assign(3 * static_cast<size_t>(nb), 0.0);
 
   const int nt = std::max(1, std::min(threads, blocks()));
-  block_order_.resize(blocks_.size());
-  for (size_t j = 0; j < block_order_.size(); ++j) block_order_[j] = static_cast<int>(j);
-  std::stable_sort(block_order_.begin(), block_order_.end(),
-                   [&](int a, int b) { return blocks_[a].size() > blocks_[b].size(); });
-  // Chunks of bodies of about the work of one block's kinematics, at least
-  // four per thread: a thread that finds no block left takes bodies.
+  // Phase 0: the blocks, largest first to the thread with the fewest points
+  // so far; phase 1: the energies (item 0) and chunks of bodies (a chunk of
+  // about the work of one block's kinematics, at least four per thread).
+  job_.assign(2, std::vector<std::vector<int>>(nt));
+  std::vector<int> order(blocks_.size());
+  for (size_t j = 0; j < order.size(); ++j) order[j] = static_cast<int>(j);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return blocks_[a].size() > blocks_[b].size(); });
+  std::vector<long> load(nt, 0);
+  for (int j : order) {
+    const int t = static_cast<int>(std::min_element(load.begin(), load.end()) - load.begin());
+    job_[0][t].push_back(j), load[t] += blocks_[j].size();
+  }
   const int per_chunk = std::max(32, 2 * n / (4 * nt));
   body_chunks_.push_back(0);
   for (int b = 0; b < nb; ++b)
     if (body_first_[b + 1] - body_first_[body_chunks_.back()] >= per_chunk || b + 1 == nb) body_chunks_.push_back(b + 1);
+  const int items = static_cast<int>(body_chunks_.size());  // the energies and the chunks
+  job_[1][nt - 1].push_back(0);
+  for (int c = 1; c < items; ++c) job_[1][static_cast<long>(c - 1) * nt / (items - 1)].push_back(c);
   block_seconds_.assign(blocks_.size(), 0.0);
   pool_ = std::make_unique<ThreadPool>(nt);
 }
@@ -119,13 +128,13 @@ void JointCalls::update(const std::vector<double>& q, const CallTime& time) { ca
 // energies (item 0) and the bodies' forces (a chunk of bodies an item).
 void JointCalls::call_all(const CallTime& time, const double* q) {
   const std::function<void(int, int)> work = [&](int phase, int item) {
-    if (phase == 0) return block_part(block_order_[item], time, q);
+    if (phase == 0) return block_part(item, time, q);
     for (int f : failed_)
       if (f >= 0) return;
     if (item == 0) return sum_part();
     body_part(body_chunks_[item - 1], body_chunks_[item]);
   };
-  pool_->run({blocks(), static_cast<int>(body_chunks_.size())}, work);
+  pool_->run(job_, work);
   double seconds = 0;
   for (double s : block_seconds_) seconds += s;
   seconds_ += seconds / pool_->participants();

@@ -79,7 +79,7 @@ class JointCalls {
   std::vector<AbiBlock> blocks_;
   std::vector<int> block_first_;         // block j holds points block_first_[j] ..
   std::vector<int> block_of_, slot_of_;  // point i is slot slot_of_[i] of block block_of_[i]
-  std::vector<int> block_order_;         // largest first: the order in which threads take them
+  std::vector<std::vector<std::vector<int>>> job_;  // items[phase][thread] (ThreadPool::run)
   std::vector<int> body_chunks_;         // chunk c: the forces of bodies [c[c], c[c+1])
   // Per body, its points in point order: i (body b of the point) or ~i (body a).
   std::vector<int> body_points_, body_first_;

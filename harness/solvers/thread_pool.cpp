@@ -32,14 +32,15 @@ void relax(unsigned turn) {
 
 }  // namespace
 
-ThreadPool::ThreadPool(int threads) : threads_(threads < 1 ? 1 : threads) {
-  for (int t = 1; t < threads_; ++t) workers_.emplace_back(&ThreadPool::worker, this);
+ThreadPool::ThreadPool(int threads)
+    : threads_(threads < 1 ? 1 : threads), queues_(static_cast<size_t>(kMaxPhases) * threads_) {
+  for (int t = 1; t < threads_; ++t) workers_.emplace_back(&ThreadPool::worker, this, t);
 }
 
 ThreadPool::~ThreadPool() {
   if (workers_.empty()) return;
   stop_.store(true, std::memory_order_seq_cst);
-  claim_.store(static_cast<std::uint64_t>(generation_ + 1) << 32, std::memory_order_seq_cst);
+  generation_.fetch_add(1, std::memory_order_seq_cst);
   { std::lock_guard<std::mutex> lock(sleep_mutex_); }
   wake_.notify_all();
   for (std::thread& w : workers_) w.join();
@@ -47,74 +48,110 @@ ThreadPool::~ThreadPool() {
 
 // A worker starts from generation 0, the pool's before its first job: a job
 // or the stop published before the worker first runs is not missed.
-void ThreadPool::worker() {
+void ThreadPool::worker(int thread) {
   std::uint32_t seen = 0;
   for (;;) {
     const auto start = std::chrono::steady_clock::now();
     std::uint32_t generation;
-    for (unsigned turn = 1; (generation = generation_of(claim_.load(std::memory_order_acquire))) == seen; ++turn) {
+    for (unsigned turn = 1; (generation = generation_.load(std::memory_order_acquire)) == seen; ++turn) {
       relax(turn);
       if (turn % 64 != 0 || std::chrono::steady_clock::now() - start < kSpin) continue;
       sleepers_.fetch_add(1, std::memory_order_seq_cst);
       {
         std::unique_lock<std::mutex> lock(sleep_mutex_);
-        wake_.wait(lock, [&] { return generation_of(claim_.load(std::memory_order_seq_cst)) != seen; });
+        wake_.wait(lock, [&] { return generation_.load(std::memory_order_seq_cst) != seen; });
       }
       sleepers_.fetch_sub(1, std::memory_order_relaxed);
     }
     if (stop_.load(std::memory_order_seq_cst)) return;
     seen = generation;
-    take_part(generation);
+    take_part(thread, generation);
   }
 }
 
-void ThreadPool::take_part(std::uint32_t generation) {
+int ThreadPool::claim(int phase, int owner, std::uint32_t generation) {
+  std::atomic<std::uint64_t>& word = queues_[static_cast<size_t>(phase) * threads_ + owner].claim;
+  std::uint64_t c = word.load(std::memory_order_acquire);
+  do {
+    if (generation_of(c) != generation || unclaimed_of(c) == 0) return -1;
+  } while (!word.compare_exchange_weak(c, c - 1, std::memory_order_acq_rel, std::memory_order_acquire));
+  // A claim made: the job stays the caller's current one until this item is done.
+  const std::vector<int>& list = (*job_)[phase][owner];
+  return list[list.size() - unclaimed_of(c)];
+}
+
+void ThreadPool::run_item(int phase, int item) {
+  if (!failed_.load(std::memory_order_acquire)) {
+    try {
+      (*work_)(phase, item);
+    } catch (...) {
+      const int order = (phase > 0 ? phase_end_[phase - 1].load(std::memory_order_relaxed) : 0) + item;
+      std::lock_guard<std::mutex> lock(error_mutex_);
+      if (!error_ || order < error_item_) error_ = std::current_exception(), error_item_ = order;
+      failed_.store(true, std::memory_order_release);
+    }
+  }
+  done_.fetch_add(1, std::memory_order_acq_rel);
+}
+
+void ThreadPool::take_part(int thread, std::uint32_t generation) {
   bool counted = false;
-  for (;;) {
-    std::uint64_t claim = claim_.load(std::memory_order_acquire);
-    do {
-      if (generation_of(claim) != generation || unclaimed_of(claim) == 0) return;
-    } while (!claim_.compare_exchange_weak(claim, claim - 1, std::memory_order_acq_rel, std::memory_order_acquire));
-    // A claim made: the job stays the caller's current one until this item is done.
-    const int item = total_ - static_cast<int>(unclaimed_of(claim));
-    if (!counted) participants_.fetch_add(1, std::memory_order_relaxed), counted = true;
-    int phase = 0;
-    while (item >= phase_end_[phase]) ++phase;
-    if (phase > 0)
-      for (unsigned turn = 0; done_.load(std::memory_order_acquire) < phase_end_[phase - 1]; ++turn) relax(turn);
-    if (!failed_.load(std::memory_order_acquire)) {
-      try {
-        (*work_)(phase, phase > 0 ? item - phase_end_[phase - 1] : item);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex_);
-        if (!error_ || item < error_item_) error_ = std::current_exception(), error_item_ = item;
-        failed_.store(true, std::memory_order_release);
+  const int phases = phases_.load(std::memory_order_acquire);
+  for (int phase = 0; phase < phases; ++phase) {
+    if (phase > 0) {
+      const int end = phase_end_[phase - 1].load(std::memory_order_acquire);
+      for (unsigned turn = 0; done_.load(std::memory_order_acquire) < end; ++turn) {
+        if (generation_.load(std::memory_order_acquire) != generation) return;
+        relax(turn);
       }
     }
-    done_.fetch_add(1, std::memory_order_acq_rel);
+    // Its own items first, then the others'.
+    for (int k = 0; k < threads_; ++k) {
+      const int owner = (thread + k) % threads_;
+      for (int item; (item = claim(phase, owner, generation)) >= 0;) {
+        if (!counted) participants_.fetch_add(1, std::memory_order_relaxed), counted = true;
+        run_item(phase, item);
+      }
+    }
   }
 }
 
-void ThreadPool::run(const std::vector<int>& items, const std::function<void(int, int)>& work) {
-  phase_end_.resize(items.size());
-  total_ = 0;
-  for (size_t p = 0; p < items.size(); ++p) phase_end_[p] = total_ += items[p];
-  if (total_ == 0) return;
-  work_ = &work;
+void ThreadPool::run(const Job& items, const std::function<void(int, int)>& work) {
+  const int phases = static_cast<int>(items.size() < kMaxPhases ? items.size() : kMaxPhases);
+  int total = 0;
+  for (int p = 0; p < phases; ++p) {
+    for (int t = 0; t < threads_; ++t) total += t < static_cast<int>(items[p].size()) ? items[p][t].size() : 0;
+    phase_end_[p].store(total, std::memory_order_relaxed);
+  }
+  if (total == 0) return;
+  job_ = &items, work_ = &work;
   error_ = nullptr;
   failed_.store(false, std::memory_order_relaxed);
   done_.store(0, std::memory_order_relaxed);
   participants_.store(0, std::memory_order_relaxed);
-  ++generation_;
-  claim_.store(static_cast<std::uint64_t>(generation_) << 32 | static_cast<std::uint32_t>(total_),
-               std::memory_order_seq_cst);
+  phases_.store(phases, std::memory_order_relaxed);
+  const std::uint32_t generation = generation_.load(std::memory_order_relaxed) + 1;
+  for (int p = 0; p < phases; ++p)
+    for (int t = 0; t < threads_; ++t) {
+      const std::uint64_t n = t < static_cast<int>(items[p].size()) ? items[p][t].size() : 0;
+      queues_[static_cast<size_t>(p) * threads_ + t].claim.store(static_cast<std::uint64_t>(generation) << 32 | n,
+                                                                  std::memory_order_relaxed);
+    }
+  generation_.store(generation, std::memory_order_seq_cst);
   if (sleepers_.load(std::memory_order_seq_cst) > 0) {
     { std::lock_guard<std::mutex> lock(sleep_mutex_); }
     wake_.notify_all();
   }
-  take_part(generation_);
-  for (unsigned turn = 0; done_.load(std::memory_order_acquire) < total_; ++turn) relax(turn);
+  take_part(0, generation);
+  for (unsigned turn = 0; done_.load(std::memory_order_acquire) < total; ++turn) relax(turn);
   if (error_) std::rethrow_exception(error_);
+}
+
+void ThreadPool::run_dealt(const std::vector<int>& items, const std::function<void(int, int)>& work) {
+  dealt_.assign(items.size(), std::vector<std::vector<int>>(threads_));
+  for (size_t p = 0; p < items.size(); ++p)
+    for (int i = 0; i < items[p]; ++i) dealt_[p][i % threads_].push_back(i);
+  run(dealt_, work);
 }
 
 }  // namespace mortar::harness
