@@ -23,7 +23,13 @@ void check_bound(const SceneSpec& s, const char* key, double x, double bound, co
   throw InputError(s.file + ": [loading] " + key + " " + input_number(x) + " " + unit + " violates the rule: " + why);
 }
 
-BlockSolver checked_solver(const SceneSpec& spec, const WallModel& model, const BlockSolverOptions& options) {
+int threads_for(const WallModel& model, int threads) {
+  const int most = std::max(1, static_cast<int>(model.points.size()) / kPointsPerThread);
+  return std::max(1, std::min(threads, most));
+}
+
+BlockSolver checked_solver(const SceneSpec& spec, const WallModel& model, BlockSolverOptions options) {
+  options.threads = threads_for(model, options.threads);
   try {
     return BlockSolver(spec, model, options);
   } catch (const std::invalid_argument& e) {
@@ -78,6 +84,7 @@ ScenePlan::ScenePlan(const SceneSpec& spec, const BlockSolverOptions& options)
     throw InputError(m.str());
   }
   increments_ = solver_.total_increments();
+  threads_ = threads_for(model_, options.threads);
   const int every = spec.output.every;
   every_ = every > 0 ? every : static_cast<int>(std::max(1L, increments_ / 2000));
   if (rows() > spec.output.max_rows)

@@ -12,6 +12,10 @@
 namespace mortar::harness {
 
 constexpr int kMaxSnapshots = 100;  // [output] snapshots: times, at most
+// --threads N runs at most one thread per this many contact points: on
+// fewer, a thread's share of an increment is too small to pay for the
+// exchange of data between cores (docs/bench/throughput.md).
+constexpr int kPointsPerThread = 200;
 
 class ScenePlan {
  public:
@@ -24,6 +28,7 @@ class ScenePlan {
   long increments() const { return increments_; }
   int every() const { return every_; }  // a history row every `every` increments
   long rows() const { return history_rows(increments_, every_); }
+  int threads() const { return threads_; }  // what the solver runs on
 
   // Rows of a run of n increments sampled every `every` (and at the last).
   static long history_rows(long n, int every) { return n / every + 1 + (n % every != 0 ? 1 : 0); }
@@ -32,7 +37,7 @@ class ScenePlan {
   WallModel model_;  // before solver_, which holds a reference to it
   BlockSolver solver_;
   long increments_ = 0;
-  int every_ = 1;
+  int every_ = 1, threads_ = 1;
 };
 
 // The rules on the loading's magnitudes (finite is the reader's rule).

@@ -100,3 +100,17 @@ TEST_CASE("scene plan: the bounds are input errors naming the key, the value and
   s.wall.beam_mass = 0;
   CHECK_THAT(plan_error(s), Catch::Contains("the top beam has no mass"));
 }
+
+TEST_CASE("scene plan: at most one thread per kPointsPerThread contact points", "[wall]") {
+  const SceneSpec small = read_scene_file(data("wall_small.toml"));  // 69 points
+  const SceneSpec j4d = read_scene_file(std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples/tu_eindhoven_wall/wall_j4d.toml");
+  BlockSolverOptions o;
+  o.threads = 2;
+  CHECK(ScenePlan(small, o).threads() == 1);
+  const ScenePlan plan(j4d, o);
+  const int most = static_cast<int>(plan.model().points.size()) / kPointsPerThread;
+  REQUIRE(most >= 2);
+  CHECK(plan.threads() == 2);
+  o.threads = most + 5;
+  CHECK(ScenePlan(j4d, o).threads() == most);
+}
