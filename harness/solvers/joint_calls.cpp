@@ -137,7 +137,7 @@ void JointCalls::call_all(const CallTime& time, const double* q) {
   pool_->run(job_, work);
   double seconds = 0;
   for (double s : block_seconds_) seconds += s;
-  seconds_ += seconds / pool_->participants();
+  seconds_ += seconds / std::max(1, pool_->participants());
   for (int i : failed_) {
     if (i < 0) continue;
     const ContactPoint& p = model_.points[i];
