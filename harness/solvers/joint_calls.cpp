@@ -65,7 +65,7 @@ JointCalls::JointCalls(const WallModel& model, const std::vector<AbiSetup>& setu
   unpaired_.assign(n, 0);
   push_.assign(static_cast<size_t>(kPush) * n, 0.0);
   energy_.assign(static_cast<size_t>(kEnergy) * n, 0.0);
-  failed_.assign(blocks_.size(), -1);
+  result_.assign(blocks_.size(), BlockResult());
 
   // Each body's points in point order: the order in which its forces are summed.
   const int nb = static_cast<int>(model.bodies.size());
@@ -100,7 +100,6 @@ JointCalls::JointCalls(const WallModel& model, const std::vector<AbiSetup>& setu
   const int items = static_cast<int>(body_chunks_.size());  // the energies and the chunks
   job_[1][nt - 1].push_back(0);
   for (int c = 1; c < items; ++c) job_[1][static_cast<long>(c - 1) * nt / (items - 1)].push_back(c);
-  block_seconds_.assign(blocks_.size(), 0.0);
   pool_ = std::make_unique<ThreadPool>(nt);
 }
 
@@ -113,8 +112,9 @@ double JointCalls::state(int i, int slot) const {
 }
 
 double JointCalls::state_sum(int slot) const {
-  for (int k = 0; k < 3; ++k)
-    if (slot == kSummedSlots[k]) return sums_[1 + k];
+  if (slot == kSummedSlots[0]) return sums_.plastic;
+  if (slot == kSummedSlots[1]) return sums_.damage;
+  if (slot == kSummedSlots[2]) return sums_.unilateral;
   double e = 0;
   for (size_t i = 0; i < model_.points.size(); ++i) e += state(static_cast<int>(i), slot) * model_.points[i].area;
   return e;
@@ -129,16 +129,17 @@ void JointCalls::update(const std::vector<double>& q, const CallTime& time) { ca
 void JointCalls::call_all(const CallTime& time, const double* q) {
   const std::function<void(int, int)> work = [&](int phase, int item) {
     if (phase == 0) return block_part(item, time, q);
-    for (int f : failed_)
-      if (f >= 0) return;
+    for (const BlockResult& r : result_)
+      if (r.failed >= 0) return;
     if (item == 0) return sum_part();
     body_part(body_chunks_[item - 1], body_chunks_[item]);
   };
   pool_->run(job_, work);
   double seconds = 0;
-  for (double s : block_seconds_) seconds += s;
+  for (const BlockResult& r : result_) seconds += r.seconds;
   seconds_ += seconds / std::max(1, pool_->participants());
-  for (int i : failed_) {
+  for (const BlockResult& r : result_) {
+    const int i = r.failed;
     if (i < 0) continue;
     const ContactPoint& p = model_.points[i];
     const double status = state(i, slot::status);
@@ -172,14 +173,14 @@ void JointCalls::block_part(int j, const CallTime& time, const double* q) {
   }
   const auto start = std::chrono::steady_clock::now();
   b.invoke(time);
-  block_seconds_[j] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  failed_[j] = -1;
+  result_[j].seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  result_[j].failed = -1;
   for (int k = 0; k < size; ++k) {
     const int i = first + k;
     const ContactPoint& p = model_.points[i];
     const double* state = b.state(k);
     if (state[slot::status] != 0) {
-      failed_[j] = i;
+      result_[j].failed = i;
       return;
     }
     // AbiBlock::traction, inline.
@@ -223,7 +224,7 @@ void JointCalls::body_part(int first, int end) {
 
 // The energies summed in point order.
 void JointCalls::sum_part() {
-  double sed = 0, plastic = 0, damage = 0, unilateral = 0, dissipated = dissipated_;
+  double sed = 0, plastic = 0, damage = 0, unilateral = 0, dissipated = sums_.dissipated;
   const double* e = energy_.data();
   for (int i = 0; i < points(); ++i, e += kEnergy) {
     sed += e[0];
@@ -232,8 +233,8 @@ void JointCalls::sum_part() {
     damage += e[3];
     unilateral += e[4];
   }
-  sums_[0] = sed, sums_[1] = plastic, sums_[2] = damage, sums_[3] = unilateral;
-  dissipated_ = dissipated;
+  sums_.sed = sed, sums_.plastic = plastic, sums_.damage = damage, sums_.unilateral = unilateral;
+  sums_.dissipated = dissipated;
 }
 
 void JointCalls::add_forces(std::vector<double>& f) const {

@@ -58,8 +58,8 @@ class JointCalls {
   double state(int i, int slot) const;  // SDV slot+1
   // Sums over the points, times the tributary areas [N·mm]: sed, and the
   // accumulated spd + sfd of every call so far.
-  double elastic_energy() const { return sums_[0]; }
-  double dissipated() const { return dissipated_; }
+  double elastic_energy() const { return sums_.sed; }
+  double dissipated() const { return sums_.dissipated; }
   // Σ SDV(slot+1)·area: the law's split of the dissipation (SDV 16, 17, 18)
   // is summed with each call; any other slot on request.
   double state_sum(int slot) const;
@@ -88,10 +88,16 @@ class JointCalls {
   std::vector<double> push_;    // per point: fx, fy on body b, moments on b and on a
   std::vector<double> energy_;  // per point, times area: sed, spd + sfd, SDV 16, 17, 18
   std::vector<double> force_;   // 3 per body
-  std::vector<int> failed_;     // per block: its first point with a nonzero status, or -1
-  std::vector<double> block_seconds_;   // per block, in the routine in the last call
-  double sums_[4] = {0, 0, 0, 0};  // sed, SDV 16, 17, 18 (times area)
-  double dissipated_ = 0, seconds_ = 0;
+  // What each thread writes in a call, each on cache lines of its own.
+  struct alignas(64) BlockResult {
+    int failed = -1;       // the block's first point with a nonzero status, or -1
+    double seconds = 0;    // in the routine in the last call
+  };
+  std::vector<BlockResult> result_;  // per block
+  struct alignas(64) Sums {
+    double sed = 0, plastic = 0, damage = 0, unilateral = 0, dissipated = 0;  // times area
+  } sums_;
+  double seconds_ = 0;
   std::unique_ptr<ThreadPool> pool_;
 };
 
