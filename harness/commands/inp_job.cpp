@@ -14,6 +14,7 @@
 #include "output/two_block_deck.hpp"
 #include "output/wall_deck.hpp"
 #include "solvers/block_solver.hpp"
+#include "solvers/scene_plan.hpp"
 
 namespace mortar::harness {
 
@@ -27,10 +28,9 @@ int scene_job(const InpArgs& a, std::ostream& out) {
     throw InputError("--scene " + a.scene +
                      ": --scheme, --stol and --two-blocks do not apply (the scene file sets scheme and stol)");
   const SceneSpec spec = read_scene_file(a.scene);
-  const WallModel model = build_wall(spec.wall);
   // The scene solver's own increment: the deck's fixed Abaqus increment.
-  const BlockSolver solver(spec, model, BlockSolverOptions{});
-  write_wall_deck(out, spec, model, solver.time_increment());
+  ScenePlan plan(spec, BlockSolverOptions{});
+  write_wall_deck(out, spec, plan.model(), plan.solver().time_increment());
   return 0;
 }
 

@@ -17,6 +17,7 @@
 #include "output/terminal_text.hpp"
 #include "scenes/wall.hpp"
 #include "solvers/block_solver.hpp"
+#include "solvers/scene_plan.hpp"
 
 namespace mortar::harness {
 
@@ -28,7 +29,6 @@ void check_args(const SceneArgs& a) {
   if (a.block < 1 || a.block > 136)
     throw InputError("--block " + std::to_string(a.block) +
                      " violates the rule: 1 <= block <= 136 (Abaqus/Explicit's largest nBlock)");
-  prepare_output_folder(a.out, "--out");
 }
 
 }  // namespace
@@ -36,13 +36,16 @@ void check_args(const SceneArgs& a) {
 int scene_command(const SceneArgs& args, std::ostream& out, std::ostream& err) {
   check_args(args);
   const SceneSpec spec = read_scene_file(args.file);
-  const WallModel model = build_wall(spec.wall);
   BlockSolverOptions options;
   options.block = args.block;
   options.threads = args.threads;
-  BlockSolver solver(spec, model, options);
-  const long total = solver.total_increments();
-  const int every = spec.output.every > 0 ? spec.output.every : static_cast<int>(std::max(1L, total / 2000));
+  // Everything checked before the folder is made: a bad scene writes nothing.
+  ScenePlan plan(spec, options);
+  const WallModel& model = plan.model();
+  BlockSolver& solver = plan.solver();
+  const long total = plan.increments();
+  const int every = plan.every();
+  prepare_output_folder(args.out, "--out");
   HistoryCsv history(args.out + "/history.csv");
   WallSample last;
   std::vector<WallSnapshot> snaps;

@@ -62,6 +62,12 @@ class TableReader {
   long integer(const char* key, long fallback, long min, long max) const {
     return has(key) ? read_integer(file_, at(key), what(key), min, max) : fallback;
   }
+  // A bound on a count: whole, written as an integer or as 2e7.
+  long count(const char* key, long fallback) const {
+    return static_cast<long>(number(key, static_cast<double>(fallback), false,
+                                    [](double x) { return x >= 1 && x <= 1e9 && x == std::floor(x); },
+                                    "a whole number in [1, 1e9]"));
+  }
   bool boolean(const char* key, bool fallback) const {
     if (!has(key)) return fallback;
     if (!at(key).is_boolean())
@@ -185,17 +191,19 @@ void read_loading(const TableReader& t, LoadingSpec& l) {
 }
 
 void read_solver(const TableReader& t, SolverSpec& s) {
-  t.keys({"safety_factor", "mass_scaling", "mass_damping"});
+  t.keys({"safety_factor", "mass_scaling", "mass_damping", "max_increments"});
   s.safety_factor = t.number("safety_factor", 0.8, false, [](double x) { return x > 0 && x <= 1; }, "0 < x <= 1");
   s.mass_scaling = t.number("mass_scaling", 1.0, false, [](double x) { return x >= 1; }, ">= 1");
   s.mass_damping = t.non_negative("mass_damping", 0);
+  s.max_increments = t.count("max_increments", s.max_increments);
 }
 
 void read_output(const TableReader& t, SceneOutputSpec& o) {
-  t.keys({"every", "snapshots", "magnification", "joint_colour", "experiment", "experiment_label"});
+  t.keys({"every", "snapshots", "magnification", "max_rows", "joint_colour", "experiment", "experiment_label"});
   o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
   o.snapshot_times = t.numbers("snapshots");
   o.magnification = t.non_negative("magnification", 0);
+  o.max_rows = t.count("max_rows", o.max_rows);
   o.joint_colour = static_cast<JointColour>(t.choice("joint_colour", {"dissipation", "opening", "damage"}, 0));
 }
 

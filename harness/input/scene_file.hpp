@@ -46,6 +46,7 @@ struct SolverSpec {
   double safety_factor = 0.8;  // on the stable increment (Gershgorin bound, solvers/block_solver.hpp)
   double mass_scaling = 1.0;   // factor on every inertia (not on weights)
   double mass_damping = 0.0;   // alpha of C = alpha·M [1/s]
+  long max_increments = 20000000;  // a scene that plans more is rejected (solvers/scene_plan.hpp)
 };
 
 // What colours the joint points in the wall pictures: the dissipated energy
@@ -63,6 +64,7 @@ struct SceneOutputSpec {
   std::string experiment;
   std::vector<std::vector<double>> experiment_curve;
   std::string experiment_label;
+  long max_rows = 1000000;            // history rows, at most (solvers/scene_plan.hpp)
 };
 
 // The units' elasticity, lumped into the interfaces in series where the

@@ -18,17 +18,22 @@ std::vector<double> rectangle(double x0, double y0, double x1, double y1) {
   return {x0, y0, x1, y0, x1, y1, x0, y1};
 }
 
-// Adds a rectangle of mass to a body (parallel-axis theorem), so that a tied
-// course and the beam (or the base) become one rigid body.
-void add_mass(Body& b, double x0, double y0, double x1, double y1, double density, double depth) {
-  const double w = x1 - x0, h = y1 - y0, m = w * h * depth * density;
-  const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+// Adds a mass m with its centroid (cx, cy) and its own rotary inertia to a
+// body (parallel-axis theorem).
+void add_part(Body& b, double m, double cx, double cy, double inertia) {
   const double total = b.mass + m;
   if (total <= 0) return;
   const double ncx = (b.mass * b.cx + m * cx) / total, ncy = (b.mass * b.cy + m * cy) / total;
   const double ib = b.inertia + b.mass * ((b.cx - ncx) * (b.cx - ncx) + (b.cy - ncy) * (b.cy - ncy));
-  const double ip = m * (w * w + h * h) / 12 + m * ((cx - ncx) * (cx - ncx) + (cy - ncy) * (cy - ncy));
+  const double ip = inertia + m * ((cx - ncx) * (cx - ncx) + (cy - ncy) * (cy - ncy));
   b.mass = total, b.cx = ncx, b.cy = ncy, b.inertia = ib + ip;
+}
+
+// Adds a rectangle of mass to a body, so that a tied course and the beam
+// (or the base) become one rigid body.
+void add_mass(Body& b, double x0, double y0, double x1, double y1, double density, double depth) {
+  const double w = x1 - x0, h = y1 - y0, m = w * h * depth * density;
+  add_part(b, m, 0.5 * (x0 + x1), 0.5 * (y0 + y1), m * (w * w + h * h) / 12);
 }
 
 // The x-intervals of course c: running bond starts every other course with
@@ -121,8 +126,10 @@ class Builder {
     }
     Body beam;
     beam.course = g_.courses;
-    add_mass(beam, 0, H, L, H + g_.beam_height, g_.beam_mass / std::max(1e-300, L * g_.beam_height * g_.unit_depth),
-             g_.unit_depth);
+    if (g_.beam_height > 0)
+      add_mass(beam, 0, H, L, H + g_.beam_height, g_.beam_mass / (L * g_.beam_height * g_.unit_depth), g_.unit_depth);
+    else  // a beam of no height: its mass along the top of the wall
+      add_part(beam, g_.beam_mass, 0.5 * L, H, g_.beam_mass * L * L / 12);
     for (const auto& part : beam_parts)
       add_mass(beam, part.second.first, part.first * bh_, part.second.second, (part.first + 1) * bh_, g_.density,
                g_.unit_depth);

@@ -104,7 +104,7 @@ TEST_CASE("wall: quasi-static: the peak hardly moves with the loading rate or th
   CHECK(relative(peak_finer, peak) < 0.01);
 }
 
-TEST_CASE("wall: nBlock 1, 64, 136 and 1 or 2 threads give bit-identical results", "[wall]") {
+TEST_CASE("wall: nBlock 1, 7, 64, 136 and 1, 2 or 3 threads give bit-identical results", "[wall]") {
   const SceneSpec spec = read_scene_file(data("wall_small.toml"));
   auto history = [&](int block, int threads) {
     BlockSolverOptions o;
@@ -113,15 +113,19 @@ TEST_CASE("wall: nBlock 1, 64, 136 and 1 or 2 threads give bit-identical results
   };
   const std::vector<WallSample> reference = history(136, 1);
   REQUIRE(build_wall(spec.wall).points.size() > 64);  // 64 splits the points into two blocks
-  for (auto [block, threads] : {std::pair{1, 1}, {64, 1}, {64, 2}, {136, 2}, {1, 2}}) {
+  for (auto [block, threads] : {std::pair{1, 1}, {7, 1}, {64, 1}, {64, 2}, {136, 2}, {1, 2}, {7, 2}, {7, 3}, {136, 3}}) {
     const std::vector<WallSample> h = history(block, threads);
     REQUIRE(h.size() == reference.size());
     bool same = true;
     for (size_t i = 0; i < h.size(); ++i) {
       const WallSample &a = h[i], &b = reference[i];
-      same = same && a.base_shear == b.base_shear && a.base_normal == b.base_normal && a.top_uy == b.top_uy &&
-             a.actuator == b.actuator && a.energy.elastic == b.energy.elastic &&
-             a.energy.dissipated == b.energy.dissipated && a.energy.kinetic == b.energy.kinetic;
+      const WallEnergies &ea = a.energy, &eb = b.energy;
+      same = same && a.increment == b.increment && a.time == b.time && a.stage == b.stage && a.top_ux == b.top_ux &&
+             a.top_uy == b.top_uy && a.top_rotation == b.top_rotation && a.base_shear == b.base_shear &&
+             a.base_normal == b.base_normal && a.actuator == b.actuator && ea.external == eb.external &&
+             ea.elastic == eb.elastic && ea.dissipated == eb.dissipated && ea.plastic == eb.plastic &&
+             ea.damage == eb.damage && ea.unilateral == eb.unilateral && ea.kinetic == eb.kinetic &&
+             ea.damping == eb.damping;
     }
     INFO("nBlock " << block << ", threads " << threads);
     CHECK(same);
