@@ -193,3 +193,27 @@ TEST_CASE("scene files: [output] experiment is read with the scene, its rows as 
   CHECK_THROWS_WITH(read_scene_file(data("bad/scene_experiment_columns.toml")),
                     Catch::Contains("experiment_no_shear.csv: has no column 'base_shear_kN'"));
 }
+
+TEST_CASE("wall: a cyclic push: the base shear turns with the displacement, the residual both ways N·tan(phir)",
+          "[wall]") {
+  SceneSpec spec = read_scene_file(data("wall_one_block.toml"));
+  spec.loading.displacement = {1.5, -1.5, 1.5};
+  const std::vector<WallSample> h = history(spec, 10);
+  const WallModel m = build_wall(spec.wall);
+  double weight = 0;
+  for (size_t b = 1; b < m.bodies.size(); ++b) weight += m.bodies[b].mass * spec.loading.gravity;
+  const double residual = (spec.loading.precompression * m.length * spec.wall.unit_depth + weight) *
+                          std::tan(spec.joint.values.phir * 3.14159265358979323846 / 180);
+  // The first sample of each leg's last tenth: sliding on the residual surface.
+  double lowest = 0, highest = 0;
+  for (const WallSample& s : h) {
+    if (s.stage == 4 && s.top_ux < -1.4) lowest = std::min(lowest, s.base_shear);
+    if (s.stage == 5 && s.top_ux > 1.4) highest = std::max(highest, s.base_shear);
+  }
+  INFO("N tan(phir) " << residual << " N; reversed " << lowest << " N, again forward " << highest << " N");
+  CHECK(lowest == Approx(-residual).epsilon(0.02));
+  CHECK(highest == Approx(residual).epsilon(0.02));
+  CHECK(h.back().top_ux == Approx(1.5));
+  const WallEnergies& e = h.back().energy;
+  CHECK(std::fabs(e.balance()) < 1e-3 * e.external);
+}
