@@ -42,8 +42,9 @@ std::vector<AbiSetup> interface_setups(const SceneSpec& scene) {
   return setups;
 }
 
-double horizontal_action_at(const SceneSpec& s, double t) {
-  const std::vector<double> ends = s.stage_ends();
+double horizontal_action_at(const SceneSpec& s, double t) { return horizontal_action_at(s, s.stage_ends(), t); }
+
+double horizontal_action_at(const SceneSpec& s, const std::vector<double>& ends, double t) {
   double start = ends[2], prev = 0;
   const std::vector<double>& corners = s.loading.corners();
   for (size_t k = 0; k < corners.size(); ++k) {
@@ -120,14 +121,15 @@ namespace {
 
 // External forces at time t: the weights (real masses: mass scaling changes
 // inertia only) and the precompression on the beam.
-void external_forces(const SceneSpec& s, const WallModel& m, double arm, double t, std::vector<double>& f) {
+void external_forces(const SceneSpec& s, const std::vector<double>& ends, const WallModel& m, double arm, double t,
+                     std::vector<double>& f) {
   std::fill(f.begin(), f.end(), 0.0);
   const double g = s.loading.gravity * gravity_factor_at(s, t);
   for (size_t b = 1; b < m.bodies.size(); ++b) f[3 * b + 1] = -m.bodies[b].mass * g;
   const double p = s.loading.precompression * m.length * s.wall.unit_depth;
   f[3 * m.beam() + 1] -= p * precompression_factor_at(s, t);
   if (s.loading.force_control) {  // at the action's height: a moment about the centroid
-    const double h = horizontal_action_at(s, t);
+    const double h = horizontal_action_at(s, ends, t);
     f[3 * m.beam()] += h;
     f[3 * m.beam() + 2] -= arm * h;
   }
@@ -189,18 +191,18 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
   sum.stable_increment = stable_dt_, sum.time_increment = dt_, sum.points = joints.points();
   sum.blocks = sum.calls_per_increment = joints.blocks();
   double work_loads = 0, work_actuator = 0, damping = 0, reaction_prev = 0, u_prev = 0, external_max = 0;
-  external_forces(scene_, model_, action_arm_, 0.0, f_ext);
+  external_forces(scene_, ends, model_, action_arm_, 0.0, f_ext);
 
   for (long n = 0;; ++n) {
     const double t = n * dt;
     const bool last = n == n_end;
-    // Velocities to n+1/2 (not past the end: the last sample uses v(n-1/2)).
     // The beam held at its height from the end of the hold on: the
     // support takes the beam's vertical momentum (booked as its work).
     if (scene_.wall.beam_held && dofs[uy_beam] == kFree && t >= ends[2]) {
       work_loads -= 0.125 * mass_[uy_beam] * (v[uy_beam] + v_prev[uy_beam]) * (v[uy_beam] + v_prev[uy_beam]);
       dofs[uy_beam] = kFixed, v[uy_beam] = v_prev[uy_beam] = 0;
     }
+    // Velocities to n+1/2 (not past the end: the last sample uses v(n-1/2)).
     v_prev = v;
     if (!last) {
       for (int i = 0; i < nd; ++i)
@@ -209,8 +211,8 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
       if (!force_control) {
         // The point at the action's height follows U: ux = U + arm·θ, and θ
         // moves under (I + m·arm²)·θ'' = Mθ + arm·Fx − m·arm·U''.
-        const double u0 = horizontal_action_at(scene_, t - dt), u1 = horizontal_action_at(scene_, t),
-                     u2 = horizontal_action_at(scene_, t + dt);
+        const double u0 = horizontal_action_at(scene_, ends, t - dt), u1 = horizontal_action_at(scene_, ends, t),
+                     u2 = horizontal_action_at(scene_, ends, t + dt);
         if (push_turns) {
           const double turn = f_ext[rz_beam] + f_int[rz_beam] + arm * (f_ext[ux_beam] + f_int[ux_beam]) -
                               mass_[ux_beam] * arm * (u2 - 2 * u1 + u0) / (dt * dt);
@@ -268,7 +270,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
     if (last) break;
 
     // Positions to n+1, the work of the loads and of the damping over the step.
-    external_forces(scene_, model_, action_arm_, t + dt, f_next);
+    external_forces(scene_, ends, model_, action_arm_, t + dt, f_next);
     for (int i = 0; i < nd; ++i) {
       if (dofs[i] != kFree) continue;
       const double dq = dt * v[i];
@@ -276,7 +278,7 @@ WallRunSummary BlockSolver::run(int every, const std::function<void(const WallSa
       damping += 2 * c / dt * (push_turns && i == rz_beam ? inertia_push : mass_[i]) * v[i] * dq;
       q[i] += dq;
     }
-    if (!force_control) q[ux_beam] = horizontal_action_at(scene_, t + dt) + arm * q[rz_beam];
+    if (!force_control) q[ux_beam] = horizontal_action_at(scene_, ends, t + dt) + arm * q[rz_beam];
     f_ext.swap(f_next);
     time.increment = static_cast<int>(n + 1);
     time.step_time = time.total_time = t + dt;
