@@ -55,9 +55,9 @@ ComponentEntry read_component(const std::string& file, const toml::value& v, con
     e.value = read_number(file, t.at("traction"), where + " traction");
     // Beyond any joint's strength by far: a typo or a unit mistake, which
     // the solver would otherwise chase into a failure (exit 1).
-    if (!(std::abs(e.value) <= kMaxTraction))
+    if (!(std::abs(e.value) <= kMaxTractionTarget))
       throw InputError(position_of(file, t.at("traction")) + ": " + where + " traction = " + fmt(e.value) +
-                       " MPa violates the rule: |traction| <= " + fmt(kMaxTraction) + " MPa");
+                       " MPa violates the rule: |traction| <= " + fmt(kMaxTractionTarget) + " MPa");
   } else {
     e.kind = ComponentEntry::cycles;
     const toml::value& a = t.at("cycles");

@@ -39,7 +39,7 @@ struct Protocol {
 inline constexpr long kMaxIncrementsPerStep = 10'000'000;
 inline constexpr long kMaxIncrementsTotal = 50'000'000;
 // A traction target beyond this is refused (exit 2): no joint comes near it.
-inline constexpr double kMaxTraction = 1e4;  // MPa
+inline constexpr double kMaxTractionTarget = 1e4;  // MPa
 
 Protocol read_protocol_file(const std::string& path);
 
