@@ -11,7 +11,7 @@ function(mj_file_test name file regex)
 endfunction()
 set(mj_charts ${MJ_OUT}/calibration_charts)
 mj_cli_test("calibrate: progress by stage" 0
-  "\ncalibrate: stage 1/3, direct rules[^\n]*\ncalibrate: stage 2/3, one set: [0-9]+ unknowns[^\n]*accepted\ncalibrate: params\\.toml, report\\.md, fit_\\*\\.csv and charts in [^\n]*\n$"
+  "\ncalibrate: stage 1/3, direct rules[^\n]*\ncalibrate: stage 2/3, one set: [0-9]+ unknowns.*accepted\ncalibrate: params\\.toml, report\\.md, fit_\\*\\.csv and charts in[ \n].*calibration_charts/\n$"
   calibrate --data ${PROJECT_SOURCE_DIR}/calibration_data/synthetic_example --out ${mj_charts})
 set_tests_properties("cli: calibrate: progress by stage" PROPERTIES FIXTURES_SETUP mj_charts)
 mj_file_test("calibrate chart: log slip axis" ${mj_charts}/calibration.gp
@@ -35,3 +35,8 @@ mj_file_test("bench chart: drifted and failed told apart" ${MJ_BENCH_QUICK}/stab
   "title \"drifted \\(marked x\\)\".*title \"failed \\(marked o\\)\"")
 set_tests_properties("cli: bench chart: error axis within the data" "cli: bench chart: keys beside the panels"
   "cli: bench chart: drifted and failed told apart" PROPERTIES FIXTURES_REQUIRED bench_quick)
+# The progress lines within 100 columns too (stage 2's was 122).
+add_test(NAME "cli: 100 columns: calibrate's progress on stderr"
+  COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 -DWIDTH=100 -DSTDERR=ON
+          "-DCOMMAND=${MJ_CLI};calibrate;--data;${PROJECT_SOURCE_DIR}/calibration_data/synthetic_example;--out;${MJ_OUT}/width_calibration_progress;--no-plots"
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/width.cmake)
