@@ -41,3 +41,9 @@ add_test(NAME "cli: 100 columns: calibrate's progress on stderr"
   COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 -DWIDTH=100 -DSTDERR=ON
           "-DCOMMAND=${MJ_CLI};calibrate;--data;${PROJECT_SOURCE_DIR}/calibration_data/synthetic_example;--out;${MJ_OUT}/width_calibration_progress;--no-plots"
           -P ${CMAKE_CURRENT_SOURCE_DIR}/width.cmake)
+# The validation charts (issue 39: Atkinson's cycles touched the frame): the
+# x axis has margins on both sides.
+set_tests_properties("cli: validate (all series, regression baselines)" PROPERTIES FIXTURES_SETUP mj_validation)
+mj_file_test("validate chart: x margins on Atkinson's cycles" ${MJ_OUT}/validation/atkinson_cyclic_shear.gp
+  "set offsets graph 0\\.0[1-9], graph 0\\.0[1-9], ")
+set_tests_properties("cli: validate chart: x margins on Atkinson's cycles" PROPERTIES FIXTURES_REQUIRED mj_validation)
