@@ -106,7 +106,9 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
   CalibrationSettings settings;
   settings.fit.simulation.increments = o.increments;
   settings.per_sigma_n = o.per_sigma_n;
-  if (!o.quiet) settings.stage_done = [&err](const std::string& line) { err << "calibrate: " << line << "\n"; };
+  // One line a stage (within 100 columns unless --wide), not one a simulation.
+  if (!o.quiet)
+    settings.stage_done = [&err, &o](const std::string& line) { err << terminal_text("calibrate: " + line, o.wide) << "\n"; };
   const CalibrationRun run = calibrate_curves(curves, settings);
   CapEstimate cap;  // off (fc = 0) without compression curves: no cap written
   if (!compression.empty()) {
@@ -146,8 +148,10 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
     for (const std::string& reason : v->reasons) err << "calibrate:   - " << reason << "\n";
   }
   if (!o.quiet || !handed)
-    err << "calibrate: " << (run.one_set_verdict.accepted() ? "params.toml" : "params.rejected.toml")
-        << ", report.md, fit_*.csv and charts in " << o.out_dir << "/\n";
+    err << terminal_text(std::string("calibrate: ") + (run.one_set_verdict.accepted() ? "params.toml" : "params.rejected.toml") +
+                             ", report.md, fit_*.csv and charts in " + o.out_dir + "/",
+                         o.wide)
+        << "\n";
   return handed ? 0 : kCalibrationRejected;
 }
 

@@ -53,6 +53,11 @@ ComponentEntry read_component(const std::string& file, const toml::value& v, con
   } else if (t.count("traction")) {
     e.kind = ComponentEntry::traction;
     e.value = read_number(file, t.at("traction"), where + " traction");
+    // Beyond any joint's strength by far: a typo or a unit mistake, which
+    // the solver would otherwise chase into a failure (exit 1).
+    if (!(std::abs(e.value) <= kMaxTractionTarget))
+      throw InputError(position_of(file, t.at("traction")) + ": " + where + " traction = " + fmt(e.value) +
+                       " MPa violates the rule: |traction| <= " + fmt(kMaxTractionTarget) + " MPa");
   } else {
     e.kind = ComponentEntry::cycles;
     const toml::value& a = t.at("cycles");

@@ -38,6 +38,8 @@ struct Protocol {
 
 inline constexpr long kMaxIncrementsPerStep = 10'000'000;
 inline constexpr long kMaxIncrementsTotal = 50'000'000;
+// A traction target beyond this is refused (exit 2): no joint comes near it.
+inline constexpr double kMaxTractionTarget = 1e4;  // MPa
 
 Protocol read_protocol_file(const std::string& path);
 

@@ -1,9 +1,13 @@
 # Runs a command and fails when any line of its stdout is wider than WIDTH
 # columns (UTF-8 letters the reports use count as one), or on a wrong exit:
-#   cmake -DEXPECT_EXIT=0 -DWIDTH=100 -DCOMMAND=a;b;c -P width.cmake
+#   cmake -DEXPECT_EXIT=0 -DWIDTH=100 [-DSTDERR=ON] -DCOMMAND=a;b;c -P width.cmake
+# (with STDERR=ON its stderr too: the progress lines).
 execute_process(COMMAND ${COMMAND} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT status STREQUAL "${EXPECT_EXIT}")
   message(FATAL_ERROR "exit status ${status}, expected ${EXPECT_EXIT}; output:\n${out}${err}")
+endif()
+if(STDERR)
+  set(out "${out}${err}")
 endif()
 foreach(wide σ τ ± – — ψ φ × µ ≤ ≥ →)
   string(REPLACE "${wide}" "x" out "${out}")

@@ -76,3 +76,23 @@ TEST_CASE("a parameter file never holds a non-finite value", "[calibration]") {
   CHECK_THAT(text.str(), !Catch::Contains("c0   = {"));
   CHECK_THROWS(read_parameter_file(path));
 }
+
+// Issue 39 asked for outliers to be reported: a point far off the fit is
+// named by file, data row, quantity and value; the others are not.
+TEST_CASE("a point far off the fit is reported as an outlier, by file and row", "[calibration]") {
+  TestCurve c;
+  c.file = "shear_sn0.5.csv";
+  c.kind = TestKind::shear;
+  c.sigma_n = -0.5;
+  for (int i = 0; i < 20; ++i) c.x.push_back(0.001 * i), c.y.push_back(0.05 * i), c.uplift.push_back(0);
+  c.y[7] = 30;
+  FitResult f = good_fit();
+  f.residuals = Eigen::VectorXd::Zero(40);
+  for (long i = 0; i < 40; ++i) f.residuals[i] = (i % 3 - 1) * 0.01;
+  f.residuals[14] = 2.5;  // row 8's tau (traction then uplift per point)
+  const std::vector<std::string> found = outliers(f, {c});
+  REQUIRE(found.size() == 1);
+  CHECK_THAT(found[0], Catch::StartsWith("shear_sn0.5.csv: data row 8: tau 30 MPa is an outlier: scaled residual 2.5"));
+  f.residuals[14] = 0.01;
+  CHECK(outliers(f, {c}).empty());
+}

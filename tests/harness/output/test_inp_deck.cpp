@@ -62,3 +62,16 @@ TEST_CASE("A deck with a compression cap carries props(21..24) and DEPVAR 37 (UI
   off[20] = 0;
   CHECK(deck_depvar(off, false) == 35);
 }
+
+// Issue 39: `inp --name 'A B,C'` and `--name ''` wrote an invalid deck with
+// exit 0. The rule behind the command's exit 2 (ctest drops an empty
+// argument, so the empty name is checked here).
+TEST_CASE("An interaction NAME Abaqus cannot read is named with its fault", "[inputs]") {
+  CHECK(abaqus_name_problem("") == "is empty");
+  CHECK(abaqus_name_problem("A B,C") == "holds a space");
+  CHECK(abaqus_name_problem("AB,C") == "holds ','");
+  CHECK(abaqus_name_problem("1JOINT") == "does not start with a letter");
+  CHECK(abaqus_name_problem(std::string(81, 'A')) == "has 81 characters");
+  CHECK(abaqus_name_problem(std::string(80, 'A')).empty());
+  CHECK(abaqus_name_problem("MORTAR-M15_a").empty());
+}
