@@ -49,8 +49,8 @@ inline ArgumentError check_counts(const Counts& n, const ArgumentNames& names) {
   if (n.n_node_states < 1) return {kBadNodeStates, "nNodState", n.n_node_states, "nNodState >= 1"};
   if (n.n_states < mortar::kStateCount)
     return {kBadStateCount, names.n_states, n.n_states,
-            "at least 23 state variables (DEPVAR=34 on *SURFACE INTERACTION: 23 for the law, 11 more for single "
-            "precision's float pairs)"};
+            "at least 23 state variables (DEPVAR=35 on *SURFACE INTERACTION: 23 for the law, 11 more for single "
+            "precision's float pairs, SDV 35 the integration flags)"};
   if (n.n_props < mortar::kParameterCount)
     return {kBadPropCount, names.n_props, n.n_props, "at least the 14 parameters of Table 1 (PROPERTIES=14 or more)"};
   return {};
