@@ -246,7 +246,7 @@ class WallDeck {
     if (!dashpots_.empty()) out << "DAMP-GROUND, 1, 3\n";
     if (force) {
       out << "*CLOAD, AMPLITUDE=TOP-FORCE\nBEAM-REF, 1, 1.\n";
-      if (arm_ != 0) out << "BEAM-REF, 6, " << num(-arm_) << "\n";
+      if (arm_ != 0 && s_.wall.beam_rotation == BeamRotation::free) out << "BEAM-REF, 6, " << num(-arm_) << "\n";
     } else {
       out << "*BOUNDARY, AMPLITUDE=TOP-DISPLACEMENT\nBEAM-REF, 1, 1, 1.\n";
     }

@@ -17,6 +17,7 @@
 #include "input/protocol.hpp"
 #include "input/scene_file.hpp"
 #include "output/inp_deck.hpp"
+#include "output/deck_checks.hpp"
 #include "output/inp_reader.hpp"
 #include "output/two_block_deck.hpp"
 #include "output/wall_deck.hpp"
@@ -34,13 +35,6 @@ const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../exampl
 
 std::vector<double> table_order(const Parameters& p) {
   return {p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs};
-}
-
-std::string wall_deck_text(const SceneSpec& s) {
-  const WallModel m = build_wall(s.wall);
-  std::ostringstream out;
-  write_wall_deck(out, s, m, BlockSolver(s, m, BlockSolverOptions{}).time_increment());
-  return out.str();
 }
 
 // The units' rectangles [x0, y0, x1, y1] from the scene's numbers: blocks
@@ -67,33 +61,6 @@ std::vector<std::array<double, 4>> expected_units(const SceneSpec& s) {
   }
   std::sort(out.begin(), out.end());
   return out;
-}
-
-const InpCard& amplitude(const InpModel& m, const std::string& name) {
-  for (const InpCard* c : m.all("AMPLITUDE"))
-    if (c->at("NAME") == name) return *c;
-  FAIL("no amplitude " << name);
-  throw;
-}
-
-std::vector<double> numbers(const InpCard& c) {
-  std::vector<double> out;
-  for (const auto& d : c.data)
-    for (const auto& f : d) out.push_back(inp_number(f));
-  return out;
-}
-
-// The data line of a *BOUNDARY or *CLOAD (in `step`) on `node_set` and `dof`.
-std::vector<std::string> load_line(const InpModel& m, const std::string& keyword, const std::string& node_set, int dof,
-                                   int step = -1) {
-  std::vector<std::string> found;
-  for (const InpCard* c : m.all(keyword))
-    for (const auto& d : c->data)
-      if (d[0] == node_set && std::atoi(d[1].c_str()) == dof && (step < 0 || c->step == step)) {
-        found = d;
-        found.push_back(c->at("AMPLITUDE"));
-      }
-  return found;
 }
 
 }  // namespace
@@ -269,83 +236,6 @@ TEST_CASE("inp --scene: the J4D wall's tied courses join the base and the beam",
   const double bh = s.wall.unit_height + s.wall.joint;
   CHECK(m.box_of("BASE")[1][1] == Approx(bh));                       // the bottom course in the base
   CHECK(m.box_of("BEAM")[0][1] == Approx((s.wall.courses - 1) * bh));  // the top course in the beam
-}
-
-TEST_CASE("inp --scene: a held beam's U2 is held from the end of the hold on, in a second step", "[inputs][decks]") {
-  for (const std::string& file :
-       {kData + "/wall_one_block_held.toml", kExamples + "/tu_eindhoven_wall/wall_j4d.toml"}) {
-    INFO(file);
-    const SceneSpec s = read_scene_file(file);
-    REQUIRE(s.wall.beam_held);
-    const InpModel m(wall_deck_text(s));
-    const std::vector<double> ends = s.stage_ends();
-    // Two explicit steps, LOAD to the end of the hold, HELD to the end.
-    const auto steps = m.all("STEP");
-    REQUIRE(steps.size() == 2);
-    CHECK(steps[0]->at("NAME") == "LOAD");
-    CHECK(steps[1]->at("NAME") == "HELD");
-    const auto dynamic = m.all("DYNAMIC");
-    REQUIRE(dynamic.size() == 2);
-    CHECK(inp_number(dynamic[0]->data[0][1]) == Approx(ends[2]));
-    CHECK(inp_number(dynamic[1]->data[0][1]) == Approx(ends.back() - ends[2]));
-    // The hold: a zero velocity on the beam's U2 in the second step only.
-    const auto held = load_line(m, "BOUNDARY", "BEAM-REF", 2, 2);
-    REQUIRE(held.size() == 5);
-    CHECK(inp_number(held[2]) == 2);
-    CHECK(inp_number(held[3]) == 0.0);
-    CHECK(load_line(m, "BOUNDARY", "BEAM-REF", 2, 1).empty());
-    for (const InpCard* c : m.all("BOUNDARY"))
-      if (c->step == 2) CHECK(c->at("TYPE") == "VELOCITY");
-    // The histories on total time, so that they run on through the second step.
-    for (const InpCard* c : m.all("AMPLITUDE")) CHECK(c->at("TIME") == "TOTAL TIME");
-    const auto top = numbers(amplitude(m, "TOP-DISPLACEMENT"));
-    REQUIRE(top.size() == 2 * (2 + s.loading.corners().size()));
-    CHECK(top[2] == Approx(ends[2]));
-    for (size_t k = 0; k < s.loading.corners().size(); ++k) {
-      CHECK(top[4 + 2 * k] == Approx(ends[3 + k]));
-      CHECK(top[5 + 2 * k] == Approx(s.loading.corners()[k]));
-    }
-    // The precompression stays on (in the first step, carried over).
-    const WallModel wm = build_wall(s.wall);
-    CHECK(inp_number(load_line(m, "CLOAD", "BEAM-REF", 2, 1)[2]) ==
-          Approx(-s.loading.precompression * wm.length * s.wall.unit_depth));
-  }
-}
-
-TEST_CASE("inp --scene: force control is a CLOAD through the force corners, its moment at the action's height",
-          "[inputs][decks]") {
-  const SceneSpec s = read_scene_file(kData + "/wall_rocking_force.toml");
-  REQUIRE(s.loading.force_control);
-  const WallModel wm = build_wall(s.wall);
-  const InpModel m(wall_deck_text(s));
-  const std::vector<double> ends = s.stage_ends();
-  REQUIRE(m.all("STEP").size() == 1);
-  // No displacement on the beam's U1; the force along 1 and -F·arm about 3.
-  CHECK(load_line(m, "BOUNDARY", "BEAM-REF", 1).empty());
-  const auto fx = load_line(m, "CLOAD", "BEAM-REF", 1);
-  REQUIRE(fx.size() == 4);
-  CHECK(inp_number(fx[2]) == 1.0);
-  CHECK(fx[3] == "TOP-FORCE");
-  const double arm = s.loading.action_height - wm.bodies.back().cy;
-  REQUIRE(arm != 0);
-  const auto mz = load_line(m, "CLOAD", "BEAM-REF", 6);
-  REQUIRE(mz.size() == 4);
-  CHECK(inp_number(mz[2]) == Approx(-arm));
-  CHECK(mz[3] == "TOP-FORCE");
-  CHECK(load_line(m, "BOUNDARY", "BEAM-REF", 6).empty());  // the beam free to turn
-  // The force's corners at the ends of the scene's stages.
-  const auto top = numbers(amplitude(m, "TOP-FORCE"));
-  REQUIRE(top.size() == 2 * (2 + s.loading.force.size()));
-  CHECK(top[2] == Approx(ends[2]));
-  CHECK(top[3] == 0.0);
-  for (size_t k = 0; k < s.loading.force.size(); ++k) {
-    CHECK(top[4 + 2 * k] == Approx(ends[3 + k]));
-    CHECK(top[5 + 2 * k] == Approx(s.loading.force[k]));
-  }
-  // The beam's ux is free, so it is damped like the units' (alpha·m along x).
-  bool beam_x = false;
-  for (const auto& [name, e] : m.elsets) beam_x = beam_x || name == "DAMP-BEAM-X";
-  CHECK(beam_x);
 }
 
 TEST_CASE("inp --two-blocks: geometry, props and loading match the loading programs", "[inputs][decks]") {
