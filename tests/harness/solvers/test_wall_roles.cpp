@@ -151,6 +151,7 @@ TEST_CASE("inp --scene writes a held beam and force control, refuses a displacem
     CHECK_NOTHROW(write_wall_deck(out, s, build_wall(s.wall), 1e-5));
   }
   SceneSpec rocking = read_scene_file(data("wall_rocking.toml"));
+  rocking.solver.mass_damping = 0;  // the slender panel's alpha·I does not fit dashpots at its corners
   const WallModel m = build_wall(rocking.wall);
   rocking.loading.action_height = m.bodies[m.beam()].cy;  // at the centroid: the reference node's U1
   CHECK_NOTHROW(write_wall_deck(out, rocking, m, 1e-5));
