@@ -5,7 +5,6 @@
 #include <cmath>
 #include <ostream>
 #include <set>
-#include <stdexcept>
 #include <string>
 
 #include "input/input_error.hpp"
@@ -150,8 +149,10 @@ class WallDeck {
       const double cap_x = free_x ? above * below : 0, cap_y = right * left, cap = cap_x + cap_y;
       const double M = alpha * f * body.mass, K = free_r ? alpha * f * body.inertia : 0;
       if (K > 0 && !(cap > 0 && K <= M * cap))
-        throw std::invalid_argument("inp --scene: the rotational damping of " + body_name(m_, b) +
-                                    " does not fit dashpots at its box corners");
+        throw InputError(s_.file + ": [solver] mass_damping = " + num(alpha) + ": the rotational damping of " +
+                         body_name(m_, b) + ", alpha·I = " + num(K) + " t·mm²/s, exceeds alpha·m·(sum of the corner "
+                         "offset products) = " + num(M * cap) + ", the most that dashpots at its box corners give "
+                         "(inp --scene); set mass_damping = 0 for a deck");
       const double pair_t = K > 0 ? K / cap : 0;  // translational damping added by each pair
       const std::string name = "DAMP-" + body_name(m_, b) + "-";
       const auto add = [&](const std::string& tag, int node, double x, double y, double z, bool along_x, double c) {

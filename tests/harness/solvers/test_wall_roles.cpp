@@ -151,8 +151,11 @@ TEST_CASE("inp --scene writes a held beam and force control, refuses a displacem
     CHECK_NOTHROW(write_wall_deck(out, s, build_wall(s.wall), 1e-5));
   }
   SceneSpec rocking = read_scene_file(data("wall_rocking.toml"));
-  rocking.solver.mass_damping = 0;  // the slender panel's alpha·I does not fit dashpots at its corners
   const WallModel m = build_wall(rocking.wall);
+  // The slender panel's alpha·I does not fit dashpots at its box corners: an input error naming it.
+  CHECK_THROWS_AS(write_wall_deck(out, rocking, m, 1e-5), InputError);
+  CHECK_THROWS_WITH(write_wall_deck(out, rocking, m, 1e-5), Catch::Contains("mass_damping = 50"));
+  rocking.solver.mass_damping = 0;
   rocking.loading.action_height = m.bodies[m.beam()].cy;  // at the centroid: the reference node's U1
   CHECK_NOTHROW(write_wall_deck(out, rocking, m, 1e-5));
   rocking.loading.action_height = 900.0;
