@@ -141,7 +141,8 @@ class WallDeck {
     for (int b = 1; b < static_cast<int>(m_.bodies.size()); ++b) {
       const Body& body = m_.bodies[static_cast<size_t>(b)];
       const bool beam = b == m_.beam();
-      const bool free_x = !beam || s_.loading.force_control, free_r = !(beam && s_.wall.beam_rotation == BeamRotation::fixed);
+      const bool free_x = !beam || s_.loading.force_control;
+      const bool free_r = !(beam && s_.wall.beam_rotation == BeamRotation::fixed);
       const MeshBox& box = mesh_.box(boxes_[static_cast<size_t>(b)]);
       const std::array<double, 4>& e = extent_[static_cast<size_t>(b)];  // x0, y0, x1, y1
       const auto corner = [&](int i, int j) { return box.first_node + i + (box.n[0] + 1) * j; };
@@ -150,9 +151,10 @@ class WallDeck {
       const double M = alpha * f * body.mass, K = free_r ? alpha * f * body.inertia : 0;
       if (K > 0 && !(cap > 0 && K <= M * cap))
         throw InputError(s_.file + ": [solver] mass_damping = " + num(alpha) + ": the rotational damping of " +
-                         body_name(m_, b) + ", alpha·I = " + num(K) + " t·mm²/s, exceeds alpha·m·(sum of the corner "
-                         "offset products) = " + num(M * cap) + ", the most that dashpots at its box corners give "
-                         "(inp --scene); set mass_damping = 0 for a deck");
+                         body_name(m_, b) + ", alpha·I = " + num(K) +
+                         " t·mm²/s, exceeds alpha·m·(sum of the corner offset products) = " + num(M * cap) +
+                         ", the most that dashpots at its box corners give (inp --scene); set mass_damping = 0 for "
+                         "a deck");
       const double pair_t = K > 0 ? K / cap : 0;  // translational damping added by each pair
       const std::string name = "DAMP-" + body_name(m_, b) + "-";
       const auto add = [&](const std::string& tag, int node, double x, double y, double z, bool along_x, double c) {
