@@ -5,7 +5,6 @@
 #include <cmath>
 #include <ostream>
 #include <set>
-#include <stdexcept>
 #include <string>
 
 #include "input/input_error.hpp"
@@ -44,16 +43,18 @@ std::string num(double x) { return exact_decimal(x); }
 
 // *AMPLITUDE, DEFINITION=SMOOTH STEP through (time, value) corners: between
 // two corners a step with zero velocity and acceleration at both ends (the
-// scene's half cosines have the same corners and zero end velocities).
+// scene's half cosines have the same corners and zero end velocities). On
+// total time, so that a held beam's second step keeps the same histories.
 void write_amplitude(std::ostream& out, const std::string& name, const std::vector<std::pair<double, double>>& pts) {
-  out << "*AMPLITUDE, NAME=" << name << ", DEFINITION=SMOOTH STEP\n";
+  out << "*AMPLITUDE, NAME=" << name << ", TIME=TOTAL TIME, DEFINITION=SMOOTH STEP\n";
   for (size_t i = 0; i < pts.size(); ++i)
     out << num(pts[i].first) << ", " << num(pts[i].second) << (i + 1 == pts.size() || i % 4 == 3 ? "\n" : ", ");
 }
 
 class WallDeck {
  public:
-  WallDeck(const SceneSpec& s, const WallModel& m) : s_(s), m_(m) {}
+  WallDeck(const SceneSpec& s, const WallModel& m)
+      : s_(s), m_(m), arm_(std::isnan(s.loading.action_height) ? 0.0 : s.loading.action_height - m.bodies.back().cy) {}
 
   void write(std::ostream& out, double dt) {
     mesh_bodies();
@@ -140,7 +141,8 @@ class WallDeck {
     for (int b = 1; b < static_cast<int>(m_.bodies.size()); ++b) {
       const Body& body = m_.bodies[static_cast<size_t>(b)];
       const bool beam = b == m_.beam();
-      const bool free_x = !beam, free_r = !(beam && s_.wall.beam_rotation == BeamRotation::fixed);
+      const bool free_x = !beam || s_.loading.force_control;
+      const bool free_r = !(beam && s_.wall.beam_rotation == BeamRotation::fixed);
       const MeshBox& box = mesh_.box(boxes_[static_cast<size_t>(b)]);
       const std::array<double, 4>& e = extent_[static_cast<size_t>(b)];  // x0, y0, x1, y1
       const auto corner = [&](int i, int j) { return box.first_node + i + (box.n[0] + 1) * j; };
@@ -148,8 +150,11 @@ class WallDeck {
       const double cap_x = free_x ? above * below : 0, cap_y = right * left, cap = cap_x + cap_y;
       const double M = alpha * f * body.mass, K = free_r ? alpha * f * body.inertia : 0;
       if (K > 0 && !(cap > 0 && K <= M * cap))
-        throw std::invalid_argument("inp --scene: the rotational damping of " + body_name(m_, b) +
-                                    " does not fit dashpots at its box corners");
+        throw InputError(s_.file + ": [solver] mass_damping = " + num(alpha) + ": the rotational damping of " +
+                         body_name(m_, b) + ", alpha·I = " + num(K) +
+                         " t·mm²/s, exceeds alpha·m·(sum of the corner offset products) = " + num(M * cap) +
+                         ", the most that dashpots at its box corners give (inp --scene); set mass_damping = 0 for "
+                         "a deck");
       const double pair_t = K > 0 ? K / cap : 0;  // translational damping added by each pair
       const std::string name = "DAMP-" + body_name(m_, b) + "-";
       const auto add = [&](const std::string& tag, int node, double x, double y, double z, bool along_x, double c) {
@@ -216,37 +221,53 @@ class WallDeck {
     }
   }
 
+  // One step, or with a held beam two: the second, from the end of the hold
+  // on, holds the beam's U2 where the first left it (a zero velocity: FIXED
+  // is Abaqus/Standard only). Loads, supports, amplitudes (on total time)
+  // and output requests carry over into it.
   void write_step(std::ostream& out, double dt) const {
     const std::vector<double> ends = s_.stage_ends();
     const double T = ends.back();
+    const bool force = s_.loading.force_control, held = s_.wall.beam_held;
     write_amplitude(out, "SELF-WEIGHT", {{0, 0}, {ends[0], 1}});
     write_amplitude(out, "PRECOMPRESSION", {{0, 0}, {ends[0], 0}, {ends[1], 1}});
     std::vector<std::pair<double, double>> legs = {{0, 0}, {ends[2], 0}};
     for (size_t k = 0; k < s_.loading.corners().size(); ++k) legs.push_back({ends[3 + k], s_.loading.corners()[k]});
-    write_amplitude(out, "TOP-DISPLACEMENT", legs);
-    out << "*STEP, NAME=WALL\n*DYNAMIC, EXPLICIT, DIRECT USER CONTROL\n" << num(dt) << ", " << num(T) << "\n";
+    write_amplitude(out, force ? "TOP-FORCE" : "TOP-DISPLACEMENT", legs);
+    out << "*STEP, NAME=" << (held ? "LOAD" : "WALL") << "\n*DYNAMIC, EXPLICIT, DIRECT USER CONTROL\n" << num(dt)
+        << ", " << num(held ? ends[2] : T) << "\n";
     if (s_.solver.mass_scaling != 1) out << "*FIXED MASS SCALING, FACTOR=" << num(s_.solver.mass_scaling) << "\n";
     out << "*CONTACT\n*CONTACT INCLUSIONS\n";
     for (int r : roles_) out << kRoleNames[r] << "-A, " << kRoleNames[r] << "-B\n";
     out << "*CONTACT PROPERTY ASSIGNMENT\n";
     for (int r : roles_) out << kRoleNames[r] << "-A, " << kRoleNames[r] << "-B, MORTAR-" << kRoleNames[r] << "\n";
     // Supports: the base fixed; every body in the plane; the beam's rotation
-    // as the scene says; its ux through the displacement history.
+    // as the scene says; its ux through the displacement history, or free
+    // under the force (and its moment about the reference node, arm above).
     out << "*BOUNDARY\nBASE-REF, ENCASTRE\nFREE-REFS, 3, 5\n";
     if (s_.wall.beam_rotation == BeamRotation::fixed) out << "BEAM-REF, 6, 6\n";
     if (!dashpots_.empty()) out << "DAMP-GROUND, 1, 3\n";
-    out << "*BOUNDARY, AMPLITUDE=TOP-DISPLACEMENT\nBEAM-REF, 1, 1, 1.\n"
-        << "*DLOAD, AMPLITUDE=SELF-WEIGHT\nMOVING, GRAV, " << num(s_.loading.gravity) << ", 0., -1., 0.\n"
+    if (force) {
+      out << "*CLOAD, AMPLITUDE=TOP-FORCE\nBEAM-REF, 1, 1.\n";
+      if (arm_ != 0 && s_.wall.beam_rotation == BeamRotation::free) out << "BEAM-REF, 6, " << num(-arm_) << "\n";
+    } else {
+      out << "*BOUNDARY, AMPLITUDE=TOP-DISPLACEMENT\nBEAM-REF, 1, 1, 1.\n";
+    }
+    out << "*DLOAD, AMPLITUDE=SELF-WEIGHT\nMOVING, GRAV, " << num(s_.loading.gravity) << ", 0., -1., 0.\n"
         << "*CLOAD, AMPLITUDE=PRECOMPRESSION\nBEAM-REF, 2, "
         << num(-s_.loading.precompression * m_.length * s_.wall.unit_depth) << "\n";
     out << "*OUTPUT, FIELD, NUMBER INTERVAL=100\n*NODE OUTPUT\nU, RF\n*CONTACT OUTPUT\nCSTRESS\n"
         << "*OUTPUT, HISTORY, TIME INTERVAL=" << num(T / 2000) << "\n"
         << "*NODE OUTPUT, NSET=BEAM-REF\nU1, U2, UR3, RF1, RF2\n*NODE OUTPUT, NSET=BASE-REF\nRF1, RF2, RM3\n"
         << "*ENERGY OUTPUT\nALLSE, ALLPD, ALLKE, ALLWK, ALLVD, ETOTAL\n*END STEP\n";
+    if (held)
+      out << "*STEP, NAME=HELD\n*DYNAMIC, EXPLICIT, DIRECT USER CONTROL\n" << num(dt) << ", " << num(T - ends[2])
+          << "\n*BOUNDARY, TYPE=VELOCITY\nBEAM-REF, 2, 2, 0.\n*END STEP\n";
   }
 
   const SceneSpec& s_;
   const WallModel& m_;
+  const double arm_;  // the action's height above the beam's centroid [mm]
   InpMesh mesh_;
   std::vector<int> boxes_, refs_, roles_;
   std::vector<double> volume_;
@@ -257,12 +278,18 @@ class WallDeck {
 }  // namespace
 
 void write_wall_deck(std::ostream& out, const SceneSpec& scene, const WallModel& model, double time_increment) {
-  // Boundary conditions a deck does not express yet: refused, not approximated.
-  if (scene.wall.beam_held)
-    throw InputError(scene.file + ": [top_beam] vertical = \"held\": inp --scene does not write a beam held from "
-                     "the end of the hold on; run the scene, or set vertical = \"free\" for a deck");
-  if (scene.loading.force_control)
-    throw InputError(scene.file + ": [loading] control = \"force\": inp --scene writes displacement control only");
+  // A displacement at a height on a beam free to turn (the scene moves the
+  // point at that height, the beam's rotation follows the equilibrium):
+  // refused, not approximated. At the centroid, or with the rotation fixed,
+  // the reference node's U1 is that point's.
+  const double h = scene.loading.action_height;
+  if (!scene.loading.force_control && scene.wall.beam_rotation == BeamRotation::free && !std::isnan(h) &&
+      h != model.bodies[static_cast<size_t>(model.beam())].cy)
+    throw InputError(scene.file + ": [loading] action_height = " + exact_decimal(h) +
+                     " with a displacement and [top_beam] rotation = \"free\": inp --scene writes a displacement "
+                     "at a height only at the beam's centroid (" +
+                     exact_decimal(model.bodies[static_cast<size_t>(model.beam())].cy) +
+                     " mm) or with the rotation fixed; run the scene, or use control = \"force\" for a deck");
   WallDeck(scene, model).write(out, time_increment);
 }
 

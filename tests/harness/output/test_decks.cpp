@@ -17,6 +17,7 @@
 #include "input/protocol.hpp"
 #include "input/scene_file.hpp"
 #include "output/inp_deck.hpp"
+#include "output/deck_checks.hpp"
 #include "output/inp_reader.hpp"
 #include "output/two_block_deck.hpp"
 #include "output/wall_deck.hpp"
@@ -34,13 +35,6 @@ const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../exampl
 
 std::vector<double> table_order(const Parameters& p) {
   return {p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs};
-}
-
-std::string wall_deck_text(const SceneSpec& s) {
-  const WallModel m = build_wall(s.wall);
-  std::ostringstream out;
-  write_wall_deck(out, s, m, BlockSolver(s, m, BlockSolverOptions{}).time_increment());
-  return out.str();
 }
 
 // The units' rectangles [x0, y0, x1, y1] from the scene's numbers: blocks
@@ -67,33 +61,6 @@ std::vector<std::array<double, 4>> expected_units(const SceneSpec& s) {
   }
   std::sort(out.begin(), out.end());
   return out;
-}
-
-const InpCard& amplitude(const InpModel& m, const std::string& name) {
-  for (const InpCard* c : m.all("AMPLITUDE"))
-    if (c->at("NAME") == name) return *c;
-  FAIL("no amplitude " << name);
-  throw;
-}
-
-std::vector<double> numbers(const InpCard& c) {
-  std::vector<double> out;
-  for (const auto& d : c.data)
-    for (const auto& f : d) out.push_back(inp_number(f));
-  return out;
-}
-
-// The data line of a *BOUNDARY or *CLOAD (in `step`) on `node_set` and `dof`.
-std::vector<std::string> load_line(const InpModel& m, const std::string& keyword, const std::string& node_set, int dof,
-                                   int step = -1) {
-  std::vector<std::string> found;
-  for (const InpCard* c : m.all(keyword))
-    for (const auto& d : c->data)
-      if (d[0] == node_set && std::atoi(d[1].c_str()) == dof && (step < 0 || c->step == step)) {
-        found = d;
-        found.push_back(c->at("AMPLITUDE"));
-      }
-  return found;
 }
 
 }  // namespace
