@@ -50,6 +50,9 @@ ComponentEntry read_component(const std::string& file, const toml::value& v, con
   if (t.count("displacement")) {
     e.kind = ComponentEntry::displacement;
     e.value = read_number(file, t.at("displacement"), where + " displacement");
+    if (!(std::abs(e.value) <= kMaxDisplacementTarget))
+      throw InputError(position_of(file, t.at("displacement")) + ": " + where + " displacement = " + fmt(e.value) +
+                       " mm violates the rule: |displacement| <= " + fmt(kMaxDisplacementTarget) + " mm");
   } else if (t.count("traction")) {
     e.kind = ComponentEntry::traction;
     e.value = read_number(file, t.at("traction"), where + " traction");
@@ -66,9 +69,10 @@ ComponentEntry read_component(const std::string& file, const toml::value& v, con
                        " cycles must be a non-empty array of amplitudes [mm], e.g. [0.5, 1.0]");
     for (const toml::value& x : a.as_array()) {
       const double amp = read_number(file, x, where + " cycle amplitude");
-      if (!(amp > 0))
+      if (!(amp > 0 && amp <= kMaxDisplacementTarget))
         throw InputError(position_of(file, x) + ": " + where + " cycle amplitude " + fmt(amp) +
-                         " must be > 0 (cycles go to about + a, then about - a)");
+                         " must be > 0 and <= " + fmt(kMaxDisplacementTarget) +
+                         " mm (cycles go to about + a, then about - a)");
       e.amplitudes.push_back(amp);
     }
     if (t.count("repeat")) e.repeat = read_integer(file, t.at("repeat"), where + " repeat", 1, 100000);

@@ -40,6 +40,10 @@ inline constexpr long kMaxIncrementsPerStep = 10'000'000;
 inline constexpr long kMaxIncrementsTotal = 50'000'000;
 // A traction target beyond this is refused (exit 2): no joint comes near it.
 inline constexpr double kMaxTractionTarget = 1e4;  // MPa
+// The largest displacement target or cycle amplitude [mm]: an opening this
+// large is already far past any joint (the routine takes it as unpaired);
+// beyond it the law's arithmetic leaves its tested range.
+inline constexpr double kMaxDisplacementTarget = 1e30;
 
 Protocol read_protocol_file(const std::string& path);
 
