@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   run_cmd->add_option("--out", run.out, "Output CSV")->required();
   run_cmd->add_flag("--quiet,-q", run.quiet, "No progress or summary on stderr");
+  run_cmd->add_flag("--wide", run.wide, "The summary on stderr in full lines, wider than 100 columns");
 
   ValidateOptions val;
   const std::string data_dir = default_data_dir(MJ_CALIBRATION_DATA_DIR);

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <ostream>
+#include <sstream>
 
 #include "input/input_error.hpp"
 #include "input/parameter_file.hpp"
@@ -14,6 +15,7 @@
 #include "output/flag_tally.hpp"
 #include "output/output_paths.hpp"
 #include "output/progress.hpp"
+#include "output/terminal_text.hpp"
 #include "scenes/joint_test.hpp"
 #include "solvers/explicit_run.hpp"
 #include "validation/checks.hpp"
@@ -74,7 +76,8 @@ std::string describe(const ResidualSequence& r) {
   return s + ", " + std::to_string(r.count) + " iteration(s): " + format_residuals(r);
 }
 
-void summary(const RunArgs& a, const ImplicitStatistics& st, const FlagTally& flags, std::ostream& err) {
+void summary(const RunArgs& a, const ImplicitStatistics& st, const FlagTally& flags, std::ostream& out) {
+  std::ostringstream err;
   err << "run (implicit, UINTER): " << st.increments << " increments, " << st.attempts << " attempts ("
       << st.cuts_by_routine << " cut back on PNEWDT, " << st.diverged << " diverged, " << st.not_converged
       << " not converged, " << st.cycling << " cycling): " << st.calls << " calls of uinter_ in " << st.seconds
@@ -85,6 +88,7 @@ void summary(const RunArgs& a, const ImplicitStatistics& st, const FlagTally& fl
   if (st.has_worst) err << "run: most iterations: " << describe(st.worst) << "\n";
   err << "run: " << flags.summary() << "\n";
   err << "run: wrote " << a.out << "\n";
+  out << terminal_text(err.str(), a.wide);
 }
 
 // The run CSV (point 1's rows) and the progress line around one solver run.
@@ -202,14 +206,16 @@ int run_explicit(const RunArgs& a, std::ostream& err) {
       err);
   if (!completed) return 1;
   if (!a.quiet) {
-    err << "run: " << stats.increments << " increments x " << a.points << " point(s) in " << stats.blocks
+    std::ostringstream text;
+    text << "run: " << stats.increments << " increments x " << a.points << " point(s) in " << stats.blocks
         << " block(s): " << stats.calls << " calls of vuinteraction_ in " << stats.seconds << " s\n"
         << "run: Newton updates per increment at most " << stats.max_iterations
         << "; largest controlled-traction residual " << stats.max_traction_residual << " MPa (tolerance "
         << a.traction_tol << " MPa)\n";
-    if (a.points > 1) err << "run: largest difference of any point from point 1: " << worst << "\n";
-    err << "run: " << flags.summary() << "\n";
-    err << "run: wrote " << a.out << "\n";
+    if (a.points > 1) text << "run: largest difference of any point from point 1: " << worst << "\n";
+    text << "run: " << flags.summary() << "\n";
+    text << "run: wrote " << a.out << "\n";
+    err << terminal_text(text.str(), a.wide);
   }
   if (const std::string w = flags.unpaired_warning(); !w.empty()) err << "run: " << w << "\n";
   if (worst != 0) {

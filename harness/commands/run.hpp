@@ -35,6 +35,7 @@ struct RunArgs {
   double stol = 0, traction_tol = 1e-9;
   int points = 1, block = 512, max_cuts = 5;
   bool quiet = false, print_residuals = false, symmetric_tangent = false;
+  bool wide = false;  // the summary on stderr unwrapped (else within 100 columns)
   bool points_given = false, block_given = false, max_cuts_given = false;
 };
 
