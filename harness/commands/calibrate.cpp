@@ -138,14 +138,14 @@ int calibrate_command(const CalibrateOptions& o, std::ostream& out, std::ostream
     drawn.insert(drawn.end(), compression.begin(), compression.end());
     draw(o.out_dir, drawn, report, err);
   }
-  for (const std::string& line : run.outliers) err << "calibrate: warning: " << line << "\n";
+  for (const std::string& line : run.outliers) err << terminal_text("calibrate: warning: " + line, o.wide) << "\n";
   // The one set decides, unless the sets per sigma_n were asked for and pass.
   const bool handed = run.one_set_verdict.accepted() || (run.per_level_fitted && run.per_level_verdict.accepted());
   for (const auto* v : {&run.one_set_verdict, run.per_level_fitted ? &run.per_level_verdict : nullptr}) {
     if (!v || v->accepted()) continue;
     err << "calibrate: " << (v == &run.one_set_verdict ? "the one set" : "the sets per sigma_n")
         << " is REJECTED (written as *.rejected.toml, not for use):\n";
-    for (const std::string& reason : v->reasons) err << "calibrate:   - " << reason << "\n";
+    for (const std::string& reason : v->reasons) err << terminal_text("calibrate:   - " + reason, o.wide) << "\n";
   }
   if (!o.quiet || !handed)
     err << terminal_text(std::string("calibrate: ") + (run.one_set_verdict.accepted() ? "params.toml" : "params.rejected.toml") +
