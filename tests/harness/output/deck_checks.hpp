@@ -16,6 +16,9 @@
 
 namespace mortar::harness::test {
 
+inline const std::string kData = MJ_TEST_DATA_DIR;
+inline const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples";
+
 inline std::string wall_deck_text(const SceneSpec& s) {
   const WallModel m = build_wall(s.wall);
   std::ostringstream out;

@@ -30,8 +30,6 @@ using namespace mortar::harness::test;
 
 namespace {
 
-const std::string kData = MJ_TEST_DATA_DIR;
-const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples";
 
 std::vector<double> table_order(const Parameters& p) {
   return {p.kn, p.ks, p.ft0, p.c0, p.GIC, p.GIIC, p.phi0, p.phir, p.m, p.psi0, p.psir, p.n, p.bn, p.bs};

@@ -14,13 +14,6 @@ using namespace mortar;
 using namespace mortar::harness;
 using namespace mortar::harness::test;
 
-namespace {
-
-const std::string kData = MJ_TEST_DATA_DIR;
-const std::string kExamples = std::string(MJ_CALIBRATION_DATA_DIR) + "/../examples";
-
-}  // namespace
-
 TEST_CASE("inp --scene: a held beam's U2 is held from the end of the hold on, in a second step", "[inputs][decks]") {
   for (const std::string& file :
        {kData + "/wall_one_block_held.toml", kExamples + "/tu_eindhoven_wall/wall_j4d.toml"}) {
