@@ -4,8 +4,9 @@
 #   - it defines its entry points;
 #   - no symbol asks for a GLIBC_ version above 2.28 (an object binds to the
 #     C library of the machine that links it, unless a .symver names one);
-#   - the C++ runtime symbols it leaves undefined are listed: the linking
-#     side provides them (docs/abaqus.md, "Which Linux").
+#   - it leaves no C++ runtime symbol undefined (it carries its own), and
+#     defines no global symbol but its entry points (the runtime it carries
+#     is local to it; GNU-unique ones the dynamic linker shares by design).
 cmake_policy(VERSION 3.25)
 execute_process(COMMAND ${NM} ${OBJECT} OUTPUT_VARIABLE symbols RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
@@ -25,9 +26,18 @@ foreach(v ${versions})
   endif()
 endforeach()
 string(REGEX MATCHALL " U (_Z|__cxa_|__gxx_)[^\n]+" cxx "${symbols}")
+foreach(u ${cxx})
+  list(APPEND failures "leaves the C++ runtime symbol${u} for the linking side")
+endforeach()
+string(REGEX MATCHALL "[0-9a-f]+ [A-TV-Z] [^\n]+" globals "${symbols}")
+foreach(g ${globals})
+  string(REGEX REPLACE "^[0-9a-f]+ . " "" name "${g}")
+  if(NOT name IN_LIST ENTRIES)
+    list(APPEND failures "defines the global symbol ${name}")
+  endif()
+endforeach()
 list(LENGTH versions nversions)
-list(LENGTH cxx ncxx)
-message(STATUS "${OBJECT}: ${nversions} versioned references; ${ncxx} C++ runtime symbols for the linking side")
+message(STATUS "${OBJECT}: ${nversions} versioned references, no C++ runtime symbol left undefined")
 if(failures)
   list(JOIN failures "\n  " text)
   message(FATAL_ERROR "${OBJECT}:\n  ${text}")
