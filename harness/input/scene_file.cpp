@@ -198,15 +198,6 @@ void read_solver(const TableReader& t, SolverSpec& s) {
   s.max_increments = t.count("max_increments", s.max_increments);
 }
 
-void read_output(const TableReader& t, SceneOutputSpec& o) {
-  t.keys({"every", "snapshots", "magnification", "max_rows", "joint_colour", "experiment", "experiment_label"});
-  o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
-  o.snapshot_times = t.numbers("snapshots");
-  o.magnification = t.non_negative("magnification", 0);
-  o.max_rows = t.count("max_rows", o.max_rows);
-  o.joint_colour = static_cast<JointColour>(t.choice("joint_colour", {"dissipation", "opening", "damage"}, 0));
-}
-
 std::string resolve(const std::string& scene, const std::string& file) {
   return file.empty() || file[0] == '/' ? file : folder_of(scene) + file;
 }
@@ -217,8 +208,9 @@ std::string path_value(const std::string& scene, const toml::value& v, const std
 }
 
 // [output] experiment: read and checked here, before anything is written.
-void read_experiment(const std::string& path, const TableReader& t, SceneOutputSpec& o) {
+void read_experiment(const TableReader& t, SceneOutputSpec& o) {
   if (!t.has("experiment")) return;
+  const std::string& path = t.file();
   o.experiment = path_value(path, t.at("experiment"), "[output] experiment");
   try {
     const CsvTable curve = read_csv(o.experiment);
@@ -232,6 +224,16 @@ void read_experiment(const std::string& path, const TableReader& t, SceneOutputS
     throw InputError(o.experiment + ": [output] experiment has no rows: violates the rule: at least one point");
   o.experiment_label = t.has("experiment_label") ? read_string(path, t.at("experiment_label"), "[output] experiment_label")
                                                  : "experiment";
+}
+
+void read_output(const TableReader& t, SceneOutputSpec& o) {
+  t.keys({"every", "snapshots", "magnification", "max_rows", "joint_colour", "experiment", "experiment_label"});
+  o.every = static_cast<int>(t.integer("every", 0, 0, 1000000000));
+  o.snapshot_times = t.numbers("snapshots");
+  o.magnification = t.non_negative("magnification", 0);
+  o.max_rows = t.count("max_rows", o.max_rows);
+  o.joint_colour = static_cast<JointColour>(t.choice("joint_colour", {"dissipation", "opening", "damage"}, 0));
+  read_experiment(t, o);
 }
 
 // The scene file's tables, on top of those of the file it `extends`: a
@@ -306,6 +308,11 @@ Parameters in_series_with_units(const Parameters& p, const UnitElasticity& u, do
   return out;
 }
 
+double action_arm(const SceneSpec& s, const WallModel& m) {
+  const double h = s.loading.action_height;
+  return std::isnan(h) ? 0.0 : h - m.bodies[static_cast<size_t>(m.beam())].cy;
+}
+
 std::vector<double> SceneSpec::stage_ends() const {
   const LoadingSpec& l = loading;
   std::vector<double> ends;
@@ -353,7 +360,6 @@ SceneSpec read_scene_file(const std::string& path) {
   read_loading(TableReader(path, root, "loading", true), s.loading);
   read_solver(TableReader(path, root, "solver", false), s.solver);
   read_output(TableReader(path, root, "output", false), s.output);
-  read_experiment(path, TableReader(path, root, "output", false), s.output);
   lump_units(s);
   return s;
 }

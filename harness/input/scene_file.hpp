@@ -100,4 +100,8 @@ struct SceneSpec {
 
 SceneSpec read_scene_file(const std::string& path);
 
+// The horizontal action's height above the top beam's centroid [mm]: 0 when
+// the scene gives no action_height (the action at the centroid).
+double action_arm(const SceneSpec& s, const WallModel& m);
+
 }  // namespace mortar::harness

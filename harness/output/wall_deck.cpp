@@ -54,7 +54,7 @@ void write_amplitude(std::ostream& out, const std::string& name, const std::vect
 class WallDeck {
  public:
   WallDeck(const SceneSpec& s, const WallModel& m)
-      : s_(s), m_(m), arm_(std::isnan(s.loading.action_height) ? 0.0 : s.loading.action_height - m.bodies.back().cy) {}
+      : s_(s), m_(m), arm_(action_arm(s, m)) {}
 
   void write(std::ostream& out, double dt) {
     mesh_bodies();
@@ -282,10 +282,8 @@ void write_wall_deck(std::ostream& out, const SceneSpec& scene, const WallModel&
   // point at that height, the beam's rotation follows the equilibrium):
   // refused, not approximated. At the centroid, or with the rotation fixed,
   // the reference node's U1 is that point's.
-  const double h = scene.loading.action_height;
-  if (!scene.loading.force_control && scene.wall.beam_rotation == BeamRotation::free && !std::isnan(h) &&
-      h != model.bodies[static_cast<size_t>(model.beam())].cy)
-    throw InputError(scene.file + ": [loading] action_height = " + exact_decimal(h) +
+  if (!scene.loading.force_control && scene.wall.beam_rotation == BeamRotation::free && action_arm(scene, model) != 0)
+    throw InputError(scene.file + ": [loading] action_height = " + exact_decimal(scene.loading.action_height) +
                      " with a displacement and [top_beam] rotation = \"free\": inp --scene writes a displacement "
                      "at a height only at the beam's centroid (" +
                      exact_decimal(model.bodies[static_cast<size_t>(model.beam())].cy) +

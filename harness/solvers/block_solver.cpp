@@ -42,8 +42,6 @@ std::vector<AbiSetup> interface_setups(const SceneSpec& scene) {
   return setups;
 }
 
-double horizontal_action_at(const SceneSpec& s, double t) { return horizontal_action_at(s, s.stage_ends(), t); }
-
 double horizontal_action_at(const SceneSpec& s, const std::vector<double>& ends, double t) {
   double start = ends[2], prev = 0;
   const std::vector<double>& corners = s.loading.corners();
@@ -70,8 +68,7 @@ BlockSolver::BlockSolver(const SceneSpec& scene, const WallModel& model, const B
   const bool rotation_free = scene.wall.beam_rotation == BeamRotation::free;
   if (!scene.loading.force_control) free_[3 * model.beam()] = kPrescribed;
   if (!rotation_free) free_[3 * model.beam() + 2] = kFixed;
-  const Body& beam = model.bodies[model.beam()];
-  action_arm_ = std::isnan(scene.loading.action_height) ? 0.0 : scene.loading.action_height - beam.cy;
+  action_arm_ = action_arm(scene, model);
   for (size_t i = 0; i < mass_.size(); ++i)
     if (free_[i] == kFree && !(mass_[i] > 0))
       throw std::invalid_argument("BlockSolver: a free degree of freedom without mass (body " +

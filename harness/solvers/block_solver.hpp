@@ -121,7 +121,6 @@ std::vector<AbiSetup> interface_setups(const SceneSpec& scene);
 // The horizontal action at time t (0 before the legs): the top beam's
 // displacement [mm], or its force [N] under force control; and the factors
 // (0..1) of the self-weight and precompression.
-double horizontal_action_at(const SceneSpec& s, double t);
 double horizontal_action_at(const SceneSpec& s, const std::vector<double>& stage_ends, double t);
 double gravity_factor_at(const SceneSpec& s, double t);
 double precompression_factor_at(const SceneSpec& s, double t);
