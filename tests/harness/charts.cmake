@@ -1,5 +1,5 @@
-# Included by CMakeLists.txt (mj_cli_test, MJ_OUT, MJ_BENCH_QUICK and the
-# bench_quick fixture come from there).
+# Included by CMakeLists.txt (mj_cli_test, mj_stderr_width_test, MJ_OUT,
+# MJ_BENCH_QUICK and the bench_quick fixture come from there).
 # Issue 39's chart and progress reproductions, on the shipped example with its
 # charts: progress is one line per stage (it was 99 scrolling lines); the
 # chart script has a log slip axis (the peaks sat in the first 5-7 % of a
@@ -37,10 +37,8 @@ mj_file_test("bench chart: drifted and failed told apart" ${MJ_BENCH_QUICK}/stab
 set_tests_properties("cli: bench chart: error axis within the data" "cli: bench chart: keys beside the panels"
   "cli: bench chart: drifted and failed told apart" PROPERTIES FIXTURES_REQUIRED bench_quick)
 # The progress lines within 100 columns too (stage 2's was 122).
-add_test(NAME "cli: 100 columns: calibrate's progress on stderr"
-  COMMAND ${CMAKE_COMMAND} -DEXPECT_EXIT=0 -DWIDTH=100 -DSTDERR=ON
-          "-DCOMMAND=${MJ_CLI};calibrate;--data;${PROJECT_SOURCE_DIR}/calibration_data/synthetic_example;--out;${MJ_OUT}/width_calibration_progress;--no-plots"
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/width.cmake)
+mj_stderr_width_test("calibrate's progress on stderr" 0
+  calibrate --data ${PROJECT_SOURCE_DIR}/calibration_data/synthetic_example --out ${MJ_OUT}/width_calibration_progress --no-plots)
 # The validation charts (issue 39: Atkinson's cycles touched the frame): the
 # x axis has margins on both sides.
 set_tests_properties("cli: validate (all series, regression baselines)" PROPERTIES FIXTURES_SETUP mj_validation)

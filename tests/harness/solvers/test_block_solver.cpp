@@ -8,9 +8,11 @@
 #include "input/scene_file.hpp"
 #include "scenes/wall.hpp"
 #include "solvers/block_solver.hpp"
+#include "wall_statics.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
+using namespace mortar::harness::test;
 
 namespace {
 
@@ -27,13 +29,6 @@ Run run(const SceneSpec& spec, BlockSolverOptions options = {}, int every = 1) {
   Run r;
   r.summary = solver.run(every, [&](const WallSample& s) { r.samples.push_back(s); }, nullptr, nullptr);
   return r;
-}
-
-double weight(const SceneSpec& spec) {
-  const WallModel m = build_wall(spec.wall);
-  double w = 0;
-  for (size_t b = 1; b < m.bodies.size(); ++b) w += m.bodies[b].mass * spec.loading.gravity;
-  return w;
 }
 
 // The closed-form peak shear strength at sigma_n < 0 (docs/model.md 4).
@@ -54,7 +49,7 @@ TEST_CASE("wall: one block under precompression pushed sideways: peak and residu
   const WallModel m = build_wall(spec.wall);
   REQUIRE(m.blocks() == 0);  // the unit is clamped in the beam: one joint, beam on base
   const double area = m.length * spec.wall.unit_depth;
-  const double N = spec.loading.precompression * area + weight(spec);
+  const double N = base_load(spec);
   const Parameters& p = spec.joint.values;
   const Run r = run(spec);
   const double peak = area * peak_shear_strength(p, -N / area);
@@ -70,7 +65,7 @@ TEST_CASE("wall: a slender panel rocks at the threshold of statics", "[wall]") {
   const WallModel m = build_wall(spec.wall);
   // Every vertical load passes through the body's centroid (mid-length); the
   // actuator pushes at the centroid's height above the base joint.
-  const double N = spec.loading.precompression * m.length * spec.wall.unit_depth + weight(spec);
+  const double N = base_load(spec);
   const double lever = m.bodies[m.beam()].cy;
   const double threshold = N * 0.5 * m.length / lever;
   const Run r = run(spec);

@@ -12,9 +12,11 @@
 #include "output/wall_deck.hpp"
 #include "scenes/wall.hpp"
 #include "solvers/block_solver.hpp"
+#include "wall_statics.hpp"
 
 using namespace mortar;
 using namespace mortar::harness;
+using namespace mortar::harness::test;
 
 namespace {
 
@@ -124,9 +126,7 @@ TEST_CASE("wall: a beam held after the precompression: its height stays, a dilat
 TEST_CASE("wall: a force at the panel's top rocks it past the threshold of statics, not below", "[wall]") {
   SceneSpec spec = read_scene_file(data("wall_rocking_force.toml"));
   const WallModel m = build_wall(spec.wall);
-  double weight = 0;
-  for (size_t b = 1; b < m.bodies.size(); ++b) weight += m.bodies[b].mass * spec.loading.gravity;
-  const double N = spec.loading.precompression * m.length * spec.wall.unit_depth + weight;
+  const double N = base_load(spec);
   const double threshold = N * 0.5 * m.length / spec.loading.action_height;  // moment about the toe
   for (const double factor : {0.9, 1.1}) {
     CAPTURE(factor);
@@ -178,9 +178,7 @@ TEST_CASE("wall: a displacement at the panel's top, the beam free to turn: rocki
           "[wall]") {
   SceneSpec spec = read_scene_file(data("wall_rocking.toml"));
   const WallModel m = build_wall(spec.wall);
-  double weight = 0;
-  for (size_t b = 1; b < m.bodies.size(); ++b) weight += m.bodies[b].mass * spec.loading.gravity;
-  const double N = spec.loading.precompression * m.length * spec.wall.unit_depth + weight;
+  const double N = base_load(spec);
   for (const double height : {m.bodies[m.beam()].cy, 600.0, 900.0}) {
     CAPTURE(height);
     spec.loading.action_height = height;
@@ -212,11 +210,7 @@ TEST_CASE("wall: a cyclic push: the base shear turns with the displacement, the 
   SceneSpec spec = read_scene_file(data("wall_one_block.toml"));
   spec.loading.displacement = {1.5, -1.5, 1.5};
   const std::vector<WallSample> h = history(spec, 10);
-  const WallModel m = build_wall(spec.wall);
-  double weight = 0;
-  for (size_t b = 1; b < m.bodies.size(); ++b) weight += m.bodies[b].mass * spec.loading.gravity;
-  const double residual = (spec.loading.precompression * m.length * spec.wall.unit_depth + weight) *
-                          std::tan(spec.joint.values.phir * 3.14159265358979323846 / 180);
+  const double residual = base_load(spec) * std::tan(spec.joint.values.phir * 3.14159265358979323846 / 180);
   // The first sample of each leg's last tenth: sliding on the residual surface.
   double lowest = 0, highest = 0;
   for (const WallSample& s : h) {
